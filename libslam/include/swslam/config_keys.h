@@ -1,0 +1,32 @@
+#pragma once
+// Strict loading of parameter structs from .ini files: a key that the struct does
+// not know is an error naming the key, never a silent default.
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+#include <vector>
+
+namespace swslam
+{
+/** Throws std::invalid_argument if `section` of `cfg` holds a key that
+ * `params.saveToConfigFile()` does not write (i.e. a key the struct does not know). */
+void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                    const mrpt::config::CLoadableOptions& params);
+
+/** Throws std::invalid_argument if `cfg` has a section not in `allowed`. */
+void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,
+                        const std::vector<std::string>& allowed);
+
+/** checkKnownKeys() then params.loadFromConfigFile(). */
+template <class Params>
+Params loadStrict(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+  Params p;
+  checkKnownKeys(cfg, section, p);
+  p.loadFromConfigFile(cfg, section);
+  return p;
+}
+
+}  // namespace swslam

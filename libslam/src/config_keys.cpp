@@ -1,0 +1,53 @@
+#include "swslam/config_keys.h"
+
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/system/string_utils.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace swslam
+{
+namespace
+{
+std::string joined(const std::vector<std::string>& v)
+{
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+}  // namespace
+
+void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                    const mrpt::config::CLoadableOptions& params)
+{
+  mrpt::config::CConfigFileMemory known_cfg;
+  params.saveToConfigFile(known_cfg, section);
+  std::vector<std::string> known, present;
+  known_cfg.getAllKeys(section, known);
+  cfg.getAllKeys(section, present);
+  for (const auto& key : present)
+  {
+    const bool ok = std::any_of(known.begin(), known.end(), [&](const std::string& k) {
+      return mrpt::system::strCmpI(k, key);
+    });
+    if (!ok)
+      throw std::invalid_argument("config: unknown key '" + key + "' in section [" + section +
+                                  "]; known keys: " + joined(known));
+  }
+}
+
+void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,
+                        const std::vector<std::string>& allowed)
+{
+  std::vector<std::string> sections;
+  cfg.getAllSections(sections);
+  for (const auto& s : sections)
+  {
+    if (std::find(allowed.begin(), allowed.end(), s) == allowed.end())
+      throw std::invalid_argument("config: unknown section [" + s + "]; known sections: " +
+                                  joined(allowed));
+  }
+}
+
+}  // namespace swslam

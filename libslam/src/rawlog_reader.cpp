@@ -1,0 +1,61 @@
+#include "swslam/rawlog_reader.h"
+
+#include <mrpt/core/exceptions.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+
+namespace swslam
+{
+RawlogReader::RawlogReader(const std::string& path) : path_(path)
+{
+  if (!file_.open(path))
+    throw std::runtime_error("rawlog: cannot open '" + path + "'");
+  archive_ = std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(file_);
+}
+
+RawlogReader::~RawlogReader() = default;
+
+bool RawlogReader::next(RawlogItem& item)
+{
+  using namespace mrpt::obs;
+  while (pending_.empty())
+  {
+    const uint64_t pos_before = file_.getPosition();
+    mrpt::serialization::CSerializable::Ptr obj;
+    try
+    {
+      *archive_ >> obj;
+    }
+    catch (const std::exception& e)
+    {
+      // A read that fails without consuming a byte is the clean end of the file.
+      if (file_.getPosition() == pos_before && file_.checkEOF()) return false;
+      throw RawlogError("rawlog '" + path_ + "': corrupt or truncated entry #" +
+                            std::to_string(entries_) + " (at byte " + std::to_string(pos_before) +
+                            "): " + mrpt::exception_to_str(e),
+                        entries_);
+    }
+    entries_++;
+    if (!obj) continue;
+    if (auto obs = std::dynamic_pointer_cast<CObservation>(obj))
+    {
+      pending_.push_back({obs, nullptr});
+    }
+    else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
+    {
+      for (const auto& o : *sf) pending_.push_back({o, nullptr});
+    }
+    else if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj))
+    {
+      if (auto mv = acts->getBestMovementEstimation())
+        pending_.push_back({nullptr, std::make_shared<CActionRobotMovement2D>(*mv)});
+    }
+    // Other object kinds (maps, poses...) are not part of the input stream: skipped.
+  }
+  item = std::move(pending_.front());
+  pending_.pop_front();
+  return true;
+}
+
+}  // namespace swslam

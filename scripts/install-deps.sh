@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs the Debian bookworm packages swslam needs to build, test and run.
+# Skips apt entirely when every package is already installed.
+# Usage: scripts/install-deps.sh [--with-bench]   (--with-bench adds Ceres for swslam-bench-graph)
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libeigen3-dev libgtest-dev liboctomap-dev
+  libmrpt-obs-dev libmrpt-slam-dev libmrpt-maps-dev libmrpt-graphs-dev
+  libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
+  mrpt-common
+)
+if [[ ${1:-} == --with-bench ]]; then
+  packages+=(libceres-dev)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  sudo_cmd=(sudo)
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update
+"${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
