@@ -1,0 +1,59 @@
+#include <swslam/atomic_file.h>
+#include <swslam/tum_io.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "test_support.h"
+
+TEST(TumIo, RoundTripKeepsPosesAndTimes)
+{
+  const auto dir = swslam::test::tempDir("tum");
+  std::vector<swslam::StampedPose> poses = {{0.5, {1, 2, 0.3}}, {1.25, {-3, 4.5, -2.9}},
+                                            {1700000000.125, {0, 0, M_PI - 1e-6}}};
+  swslam::writeTum(dir + "/a.tum", poses);
+  const auto back = swslam::readTum(dir + "/a.tum");
+  ASSERT_EQ(back.size(), poses.size());
+  for (size_t i = 0; i < poses.size(); i++)
+  {
+    EXPECT_NEAR(back[i].t, poses[i].t, 1e-6);
+    EXPECT_NEAR(back[i].pose.x(), poses[i].pose.x(), 1e-6);
+    EXPECT_NEAR(back[i].pose.y(), poses[i].pose.y(), 1e-6);
+    EXPECT_NEAR(std::remainder(back[i].pose.phi() - poses[i].pose.phi(), 2 * M_PI), 0, 1e-6);
+  }
+}
+
+TEST(TumIo, MalformedLineNamesTheLine)
+{
+  const auto dir = swslam::test::tempDir("tum_bad");
+  std::ofstream(dir + "/b.tum") << "# header\n0 0 0 0 0 0 0 1\n1 2 three 0 0 0 0 1\n";
+  try
+  {
+    swslam::readTum(dir + "/b.tum");
+    FAIL();
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
+  }
+}
+
+TEST(AtomicFile, FailedWriterLeavesPreviousFileIntact)
+{
+  const auto dir = swslam::test::tempDir("atomic");
+  const auto path = dir + "/out.txt";
+  swslam::writeTextAtomically(path, "first");
+  EXPECT_THROW(swslam::writeAtomically(path,
+                                       [](const std::string& tmp) {
+                                         std::ofstream(tmp) << "half";
+                                         throw std::runtime_error("interrupted");
+                                       }),
+               std::runtime_error);
+  std::ifstream f(path);
+  std::string content;
+  f >> content;
+  EXPECT_EQ(content, "first");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+}
