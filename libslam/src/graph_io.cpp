@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -23,13 +24,19 @@ struct EdgeRecord
   EdgeKind kind;
 };
 
-/** Reads exactly `n` numbers and nothing else; false on any parse error. */
+/** Reads exactly `n` numbers and nothing else; false on any parse error. strtod reads
+ * "nan" and "inf" too, so such values reach validation and become errors, not skips. */
 bool readNumbers(std::istringstream& s, double* v, int n)
 {
+  std::string token;
   for (int k = 0; k < n; ++k)
-    if (!(s >> v[k])) return false;
-  std::string rest;
-  return !(s >> rest);
+  {
+    if (!(s >> token)) return false;
+    char* end = nullptr;
+    v[k] = std::strtod(token.c_str(), &end);
+    if (end == token.c_str() || *end != '\0') return false;
+  }
+  return !(s >> token);
 }
 
 std::string lineTag(const std::string& source, size_t line)

@@ -1,7 +1,5 @@
 #include "swslam/graph_optimizer_params.h"
 
-#include "swslam/pose_graph.h"
-
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <cmath>
@@ -62,25 +60,25 @@ void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBas
 void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                             const std::string& s) const
 {
-  c.write(s, "kernel_alpha", kernel_alpha, 30, 20,
+  c.write(s, "kernel_alpha", kernel_alpha, -1, -1,
           "Barron kernel shape in [-inf, 2]: 2 L2, 1 L1-like, 0 Cauchy, -2 Geman-McClure, -inf Welsch");
-  c.write(s, "kernel_c", kernel_c, 30, 20, "kernel scale, in standard deviations of the residual");
-  c.write(s, "robust_consecutive", robust_consecutive, 30, 20, "robustify consecutive edges");
-  c.write(s, "robust_dense_neighbour", robust_dense_neighbour, 30, 20,
+  c.write(s, "kernel_c", kernel_c, -1, -1, "kernel scale, in standard deviations of the residual");
+  c.write(s, "robust_consecutive", robust_consecutive, -1, -1, "robustify consecutive edges");
+  c.write(s, "robust_dense_neighbour", robust_dense_neighbour, -1, -1,
           "robustify dense-neighbour edges");
-  c.write(s, "robust_loop", robust_loop, 30, 20, "robustify loop-closure edges");
-  c.write(s, "robust_odometry_prior", robust_odometry_prior, 30, 20,
+  c.write(s, "robust_loop", robust_loop, -1, -1, "robustify loop-closure edges");
+  c.write(s, "robust_odometry_prior", robust_odometry_prior, -1, -1,
           "robustify odometry-prior edges");
-  c.write(s, "window_size", static_cast<uint64_t>(window_size), 30, 20,
+  c.write(s, "window_size", static_cast<uint64_t>(window_size), -1, -1,
           "newest nodes optimized per sliding-window update");
-  c.write(s, "max_iterations", static_cast<uint64_t>(max_iterations), 30, 20,
+  c.write(s, "max_iterations", static_cast<uint64_t>(max_iterations), -1, -1,
           "Levenberg-Marquardt iterations at most");
-  c.write(s, "lm_initial_lambda", lm_initial_lambda, 30, 20, "initial damping, relative to diag(H)");
-  c.write(s, "lm_max_lambda", lm_max_lambda, 30, 20, "stop when the damping exceeds this");
-  c.write(s, "relative_cost_tolerance", relative_cost_tolerance, 30, 20,
+  c.write(s, "lm_initial_lambda", lm_initial_lambda, -1, -1, "initial damping, relative to diag(H)");
+  c.write(s, "lm_max_lambda", lm_max_lambda, -1, -1, "stop when the damping exceeds this");
+  c.write(s, "relative_cost_tolerance", relative_cost_tolerance, -1, -1,
           "stop when the relative cost decrease is below this");
-  c.write(s, "step_tolerance", step_tolerance, 30, 20, "stop when |dx| < tol (|x| + tol)");
-  c.write(s, "gradient_tolerance", gradient_tolerance, 30, 20,
+  c.write(s, "step_tolerance", step_tolerance, -1, -1, "stop when |dx| < tol (|x| + tol)");
+  c.write(s, "gradient_tolerance", gradient_tolerance, -1, -1,
           "stop when the largest gradient entry is below this");
 }
 

@@ -10,7 +10,6 @@ namespace swslam
 {
 namespace
 {
-const char* kKindNames[] = {"consecutive", "dense_neighbour", "loop", "odometry_prior"};
 
 bool finitePose(const mrpt::poses::CPose2D& p)
 {
@@ -19,15 +18,6 @@ bool finitePose(const mrpt::poses::CPose2D& p)
 
 std::string nodeName(PoseGraph::TNodeID id) { return "node " + std::to_string(id); }
 }  // namespace
-
-const char* edgeKindName(EdgeKind kind) { return kKindNames[static_cast<int>(kind)]; }
-
-std::optional<EdgeKind> edgeKindFromName(const std::string& name)
-{
-  for (int k = 0; k < 4; ++k)
-    if (name == kKindNames[k]) return static_cast<EdgeKind>(k);
-  return std::nullopt;
-}
 
 void checkInformationMatrix(const mrpt::math::CMatrixDouble33& info, const std::string& what)
 {

@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of the robust pose-graph optimizer, section [graph_optimizer].
 
+#include <swslam/edge_kind.h>
 #include <swslam/robust_kernel.h>
 
 #include <mrpt/config/CLoadableOptions.h>
@@ -9,8 +10,6 @@
 
 namespace swslam
 {
-enum class EdgeKind;
-
 struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
 {
   // Barron kernel (paper eq. 14) on r = sqrt(e^T Omega e), so c is in standard deviations.

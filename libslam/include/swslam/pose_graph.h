@@ -4,6 +4,8 @@
 // the list of its edges, so that a window of nodes finds its edges without scanning the
 // whole graph. Every pose and edge is validated on insertion.
 
+#include <swslam/edge_kind.h>
+
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
@@ -15,17 +17,6 @@
 
 namespace swslam
 {
-enum class EdgeKind
-{
-  Consecutive,     ///< node k-1 -> k from scan matching (robustified in the paper)
-  DenseNeighbour,  ///< extra connection to a nearby node (paper Fig. 2)
-  Loop,            ///< loop closure
-  OdometryPrior    ///< wheel odometry or another prior between nodes
-};
-
-const char* edgeKindName(EdgeKind kind);
-std::optional<EdgeKind> edgeKindFromName(const std::string& name);
-
 class PoseGraph
 {
  public:
