@@ -33,8 +33,10 @@ class SubproblemBuilder
     return it->second;
   }
 
-  void addEdge(const PoseGraph::Edge& e)
+  void addEdge(size_t index)
   {
+    const PoseGraph::Edge& e = graph_.edge(index);
+    sub_.edge_indices.push_back(index);
     GraphProblem::Edge pe;
     pe.i = addNode(e.from, true);
     pe.j = addNode(e.to, true);
@@ -77,7 +79,7 @@ GraphSubproblem windowSubproblem(const PoseGraph& graph, size_t window_size,
       const PoseGraph::Edge& e = graph.edge(k);
       const bool from_in_window = builder.indexOf(e.from) < static_cast<int>(window_count);
       if (e.from == id || !from_in_window)
-        builder.addEdge(e);
+        builder.addEdge(k);
     }
   GraphSubproblem& sub = builder.result();
   if (sub.node_ids.size() == window_count)
@@ -96,7 +98,7 @@ GraphSubproblem fullSubproblem(const PoseGraph& graph, const GraphOptimizerParam
   if (graph.nodeCount() == 0) throw std::invalid_argument("full optimization: empty graph");
   SubproblemBuilder builder(graph, params);
   for (const auto id : graph.nodeIds()) builder.addNode(id, id == graph.root());
-  for (size_t k = 0; k < graph.edgeCount(); ++k) builder.addEdge(graph.edge(k));
+  for (size_t k = 0; k < graph.edgeCount(); ++k) builder.addEdge(k);
   return std::move(builder.result());
 }
 

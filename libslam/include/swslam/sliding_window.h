@@ -19,6 +19,7 @@ struct GraphSubproblem
 {
   GraphProblem problem;
   std::vector<PoseGraph::TNodeID> node_ids;  ///< parallel to problem.poses
+  std::vector<size_t> edge_indices;          ///< graph edge index, parallel to problem.edges
 };
 
 /** The newest `window_size` nodes free, their outside neighbours fixed. If nothing outside
