@@ -116,3 +116,20 @@ TEST(PlicpOutliers, TrimsTheWorstFractionAndAdaptiveOutliers)
   // Median of the 100 errors is 0.03; 19 of each of 0.01..0.05: 57 are <= 0.03.
   EXPECT_EQ(trimByError(in, err, 0.5, 1.0, 100).size(), 57u);
 }
+
+TEST(PlicpCorrespondences, PseudoAngleIsMonotoneInTheAngle)
+{
+  double previous = -3;
+  for (int k = 0; k < 3600; k++)
+  {
+    const double a = -M_PI + 2 * M_PI * k / 3600;
+    const double pa = pseudoAngle(std::cos(a), std::sin(a));
+    EXPECT_GT(pa, previous) << "angle " << a;
+    EXPECT_GE(pa, -2.0);
+    EXPECT_LT(pa, 2.0);
+    previous = pa;
+  }
+  EXPECT_NEAR(pseudoAngle(1, 0), 0, 1e-15);
+  EXPECT_NEAR(pseudoAngle(0, 1), 1, 1e-15);
+  EXPECT_NEAR(pseudoAngle(0, -1), -1, 1e-15);
+}

@@ -92,23 +92,36 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
   Eigen::Vector3d x = x0;
-  std::vector<Correspondence> kept, previous;
+  std::vector<Correspondence> kept, previous, before_previous;
+  // Coarse to fine: a wide matching radius first widens the basin of convergence, then it
+  // shrinks to max_correspondence_dist each time the estimate settles.
+  double max_dist = std::max(params.initial_correspondence_dist, params.max_correspondence_dist);
+  auto settled = [&]() {
+    if (max_dist <= params.max_correspondence_dist) return true;
+    max_dist = std::max(params.max_correspondence_dist, 0.5 * max_dist);
+    previous.clear();
+    before_previous.clear();
+    return false;
+  };
   res.status = MatchStatus::MaxIterations;
   for (int it = 1; it <= params.max_iterations; it++)
   {
     res.iterations = it;
     const auto cur_in_ref = transformed(cur, x);
-    auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref,
-                                            params.max_correspondence_dist,
+    auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref, max_dist,
                                             params.min_segment_length);
-    found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
+    // One match per reference point, once the radius is final: while the scans are still far
+    // apart many points share a nearest neighbour, and thinning them then shrinks the basin.
+    if (params.remove_doubles && max_dist <= params.max_correspondence_dist)
+      found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
     kept = plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
                               params.adaptive_quantile, params.adaptive_mult);
     if (kept.size() < min_n)
       return fail(res, MatchStatus::TooFewCorrespondences,
                   std::to_string(kept.size()) + " valid correspondences at iteration " +
                       std::to_string(it) + " (need " + std::to_string(min_n) + ")");
-    if (kept == previous)  // the same set gives the same solution: a fixed point
+    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
+    if ((kept == previous || kept == before_previous) && settled())
     {
       res.status = MatchStatus::Converged;
       break;
@@ -122,9 +135,11 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
     const Eigen::Vector3d step(next->x() - x.x(), next->y() - x.y(),
                                std::remainder(next->z() - x.z(), 2 * M_PI));
     x = *next;
-    previous = std::move(kept);
-    kept = previous;
-    if (step.head<2>().norm() < params.epsilon_xy && std::abs(step.z()) < params.epsilon_theta)
+    if (getenv("PLICP_DEBUG")) fprintf(stderr, "it %d d=%.2f n=%zu step %.5f %.5f %.6f x %.4f %.4f %.4f\n", it, max_dist, kept.size(), step.x(), step.y(), step.z(), x.x(), x.y(), x.z());
+    before_previous = std::move(previous);
+    previous = kept;
+    if (step.head<2>().norm() < params.epsilon_xy && std::abs(step.z()) < params.epsilon_theta &&
+        settled())
     {
       res.status = MatchStatus::Converged;
       break;

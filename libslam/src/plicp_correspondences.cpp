@@ -7,33 +7,26 @@ namespace swslam::plicp
 {
 namespace
 {
-constexpr double kTwoPi = 2 * M_PI;
-
-/** Lower bound of the distance from a point at range P to any point whose bearing differs
- * by `delta` in [0, pi]: the distance to the ray at that bearing. */
-double bearingLowerBound(double P, double delta)
-{
-  return delta < M_PI_2 ? P * std::sin(delta) : P;
-}
-
-/** Candidate (distance, index) ordering: nearer first, then lower index. */
 constexpr int kNone = std::numeric_limits<int>::max();
 
-bool better(double d, int k, double best_d, int best_k)
+/** Candidate (squared distance, index) ordering: nearer first, then lower index. */
+bool better(double d2, int k, double best_d2, int best_k)
 {
-  return d < best_d || (d == best_d && best_k != kNone && k < best_k);
+  return d2 < best_d2 || (d2 == best_d2 && best_k != kNone && k < best_k);
 }
 
-/** Walks the reference scan from `start` in one direction (`step` = +1 or -1), updating
- * (best_d, best_k). `delta(k, wrapped)` is the bearing offset of ray k from the point,
- * growing along the walk. Jumps over runs of rays whose ranges keep them farther than best. */
-template <class DeltaFn>
+/** Walks the reference scan from `start` in one direction (`step` = +1 counter-clockwise,
+ * -1 clockwise), updating (best_d2, best_k). Trig-free: the bearing offset of ray k from the
+ * point is tracked with pseudo-angles (monotone in the angle, range 4 per turn) and bounded
+ * with cross and dot products. Stops when nothing beyond can be nearer; jumps over runs of
+ * rays whose ranges keep them farther than the best so far. */
 void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, double P,
-          int start, bool wrapped, int step, DeltaFn delta, double& best_d, int& best_k)
+          double p_pseudo, int start, int step, double& best_d2, int& best_k)
 {
   const int n = static_cast<int>(ref.size());
   const auto& bigger = step > 0 ? idx.up_bigger : idx.down_bigger;
   const auto& smaller = step > 0 ? idx.up_smaller : idx.down_smaller;
+  bool wrapped = false;
   int k = start;
   for (int guard = 0; guard <= 2 * n; guard++)
   {
@@ -45,24 +38,40 @@ void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, 
       wrapped = true;
       k = k < 0 ? n - 1 : 0;
     }
-    const double dk = delta(k, wrapped);
-    if (dk > M_PI || bearingLowerBound(P, dk) > best_d) return;  // nothing beyond can be nearer
-    const double d = (ref.points[k] - p).norm();
-    if (better(d, k, best_d, best_k))
+    // Offset in pseudo-angle units (2 = half a turn), growing along the walk.
+    const double offset = step * (idx.pseudo[k] - p_pseudo) + (wrapped ? 4.0 : 0.0);
+    if (offset > 2.0) return;  // past half a turn: the other walk covers the rest
+    // Distance from p to the ray of bearing offset delta is at least P sin(delta) for delta
+    // below 90 deg and at least P beyond it.
+    const Eigen::Vector2d& u = idx.dirs[k];
+    const double along = u.dot(p), across = step * (u.y() * p.x() - u.x() * p.y());
+    const double bound = along >= 0 ? across : P;
+    if (bound > 0 && bound * bound > best_d2) return;
+    const double d2 = (ref.points[k] - p).squaredNorm();
+    if (better(d2, k, best_d2, best_k))
     {
-      best_d = d;
+      best_d2 = d2;
       best_k = k;
     }
     // Rays up to the next longer (shorter) one are no farther (nearer) from the origin than
     // ray k, so their distance to p is at least |P - r_k|: skip them when that beats nothing.
-    const double r = ref.ranges[k];
+    const double gap = P - ref.ranges[k];
     int next = k + step;
-    if (P - r > best_d) next = bigger[k];
-    else if (r - P > best_d) next = smaller[k];
+    if (gap * gap > best_d2) next = gap > 0 ? bigger[k] : smaller[k];
     k = next;
   }
 }
 }  // namespace
+
+double pseudoAngle(double x, double y)
+{
+  // "Diamond angle": 0..4 over a turn from +x, counter-clockwise; shifted to [-2, 2).
+  double a;
+  if (y >= 0) a = x >= 0 ? y / (x + y) : 1 - x / (-x + y);
+  else a = x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
+  if (!(x != 0 || y != 0)) a = 0;
+  return a >= 2 ? a - 4 : a;
+}
 
 ReferenceIndex::ReferenceIndex(const Scan& ref)
 {
@@ -72,6 +81,15 @@ ReferenceIndex::ReferenceIndex(const Scan& ref)
   down_bigger.assign(n, -1);
   down_smaller.assign(n, -1);
   const auto& r = ref.ranges;
+  dirs.resize(n);
+  pseudo.resize(n);
+  for (int i = 0; i < n; i++)
+  {
+    dirs[i] = {std::cos(ref.angles[i]), std::sin(ref.angles[i])};
+    pseudo[i] = pseudoAngle(dirs[i].x(), dirs[i].y());
+    // Keep the sequence non-decreasing at +pi, where the pseudo-angle wraps to -2.
+    if (i > 0 && pseudo[i] < pseudo[i - 1]) pseudo[i] += 4;
+  }
   // Each table entry follows the chain of its neighbour: amortized O(n).
   for (int i = n - 2; i >= 0; i--)
   {
@@ -94,7 +112,7 @@ ReferenceIndex::ReferenceIndex(const Scan& ref)
   if (n >= 2)
   {
     const double step = ref.aperture / std::max<size_t>(1, ref.beam_count - 1);
-    circular = ref.aperture + 2 * step >= kTwoPi;
+    circular = ref.aperture + 2 * step >= 2 * M_PI;
   }
 }
 
@@ -127,29 +145,24 @@ std::vector<Correspondence> findCorrespondences(const Scan& ref, const Reference
   const int n = static_cast<int>(ref.size());
   if (n < 2) return out;
   out.reserve(cur_in_ref.size());
-  int up = 0;  // first reference ray with angle >= the point's bearing (n if none)
+  int up = 0;  // first reference ray at or after the point's bearing (n if none)
   for (size_t i = 0; i < cur_in_ref.size(); i++)
   {
     const Eigen::Vector2d& p = cur_in_ref[i];
     const double P = p.norm();
-    const double phi = std::atan2(p.y(), p.x());
+    const double pp = pseudoAngle(p.x(), p.y());
     // Move the start from the previous point's position: O(1) expected for ordered scans.
-    while (up < n && ref.angles[up] < phi) up++;
-    while (up > 0 && ref.angles[up - 1] >= phi) up--;
+    while (up < n && index.pseudo[up] < pp) up++;
+    while (up > 0 && index.pseudo[up - 1] >= pp) up--;
 
-    double best_d = max_dist;
+    double best_d2 = max_dist * max_dist;
     int best_k = kNone;
-    // Counter-clockwise from the bearing, then clockwise; offsets grow along each walk.
-    walk(ref, index, p, P, up, false, +1,
-         [&](int k, bool wrapped) { return ref.angles[k] - phi + (wrapped ? kTwoPi : 0); },
-         best_d, best_k);
-    walk(ref, index, p, P, up - 1, false, -1,
-         [&](int k, bool wrapped) { return phi - ref.angles[k] + (wrapped ? kTwoPi : 0); },
-         best_d, best_k);
+    walk(ref, index, p, P, pp, up, +1, best_d2, best_k);
+    walk(ref, index, p, P, pp, up - 1, -1, best_d2, best_k);
     if (best_k == kNone) continue;
     const int j2 = secondPoint(ref, index.circular, best_k, p, min_segment);
     if (j2 < 0) continue;
-    out.push_back({static_cast<int>(i), best_k, j2, best_d});
+    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
   }
   return out;
 }
@@ -164,21 +177,21 @@ std::vector<Correspondence> findCorrespondencesBruteForce(
   const ReferenceIndex index(ref);
   for (size_t i = 0; i < cur_in_ref.size(); i++)
   {
-    double best_d = max_dist;
+    double best_d2 = max_dist * max_dist;
     int best_k = -1;
     for (int k = 0; k < n; k++)
     {
-      const double d = (ref.points[k] - cur_in_ref[i]).norm();
-      if (d < best_d)  // strict: the lowest index wins ties
+      const double d2 = (ref.points[k] - cur_in_ref[i]).squaredNorm();
+      if (d2 < best_d2)  // strict: the lowest index wins ties
       {
-        best_d = d;
+        best_d2 = d2;
         best_k = k;
       }
     }
     if (best_k < 0) continue;
     const int j2 = secondPoint(ref, index.circular, best_k, cur_in_ref[i], min_segment);
     if (j2 < 0) continue;
-    out.push_back({static_cast<int>(i), best_k, j2, best_d});
+    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
   }
   return out;
 }

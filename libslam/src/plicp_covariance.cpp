@@ -3,7 +3,8 @@
 #include <Eigen/Dense>
 
 #include <cmath>
-#include <unordered_map>
+#include <algorithm>
+#include <vector>
 
 namespace swslam::plicp
 {
@@ -80,22 +81,25 @@ Eigen::Matrix3d plicpCovariance(const std::vector<CovarianceTerm>& terms, const 
 {
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
   // One column of d2J/dxdz per measured range (eq. 6), summed over the terms using it.
-  std::unordered_map<int, Eigen::Vector3d> cur_cols, ref_cols;
+  int max_cur = -1, max_ref = -1;
+  for (const auto& t : terms)
+  {
+    max_cur = std::max(max_cur, t.ray_i);
+    max_ref = std::max({max_ref, t.ray_j1, t.ray_j2});
+  }
+  std::vector<Eigen::Vector3d> cur_cols(max_cur + 1, Eigen::Vector3d::Zero()),
+      ref_cols(max_ref + 1, Eigen::Vector3d::Zero());
   for (const auto& t : terms)
   {
     const TermDerivatives d = termDerivatives(t, x);
     H += d.H;
-    auto add = [](std::unordered_map<int, Eigen::Vector3d>& m, int k, const Eigen::Vector3d& v) {
-      auto [it, inserted] = m.try_emplace(k, v);
-      if (!inserted) it->second += v;
-    };
-    add(cur_cols, t.ray_i, d.d_rho_i);
-    add(ref_cols, t.ray_j1, d.d_rho_j1);
-    add(ref_cols, t.ray_j2, d.d_rho_j2);
+    cur_cols[t.ray_i] += d.d_rho_i;
+    ref_cols[t.ray_j1] += d.d_rho_j1;
+    ref_cols[t.ray_j2] += d.d_rho_j2;
   }
   Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
   for (const auto* cols : {&cur_cols, &ref_cols})
-    for (const auto& [k, c] : *cols) N += c * c.transpose();
+    for (const auto& c : *cols) N += c * c.transpose();
   N *= range_sigma * range_sigma;
 
   // H^-1 restricted to the observable directions; unobservable ones get a large variance.

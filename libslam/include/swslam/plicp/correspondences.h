@@ -25,10 +25,15 @@ struct Correspondence
 struct ReferenceIndex
 {
   std::vector<int> up_bigger, up_smaller, down_bigger, down_smaller;
+  std::vector<Eigen::Vector2d> dirs;  ///< unit direction of each ray
+  std::vector<double> pseudo;         ///< pseudoAngle() of each ray, non-decreasing
   bool circular = false;  ///< the scan closes on itself (aperture ~ 360 deg)
 
   explicit ReferenceIndex(const Scan& ref);
 };
+
+/** A cheap monotone stand-in for atan2(y, x): in [-2, 2), 2 per half turn. */
+double pseudoAngle(double x, double y);
 
 /** Fast search: expected O(n) over all current points. Starts each search from the previous
  * point's position in the reference scan, walks away from the point's bearing in both
