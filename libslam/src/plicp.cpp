@@ -135,7 +135,6 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
     const Eigen::Vector3d step(next->x() - x.x(), next->y() - x.y(),
                                std::remainder(next->z() - x.z(), 2 * M_PI));
     x = *next;
-    if (getenv("PLICP_DEBUG")) fprintf(stderr, "it %d d=%.2f n=%zu step %.5f %.5f %.6f x %.4f %.4f %.4f\n", it, max_dist, kept.size(), step.x(), step.y(), step.z(), x.x(), x.y(), x.z());
     before_previous = std::move(previous);
     previous = kept;
     if (step.head<2>().norm() < params.epsilon_xy && std::abs(step.z()) < params.epsilon_theta &&
