@@ -1,0 +1,253 @@
+#include "swslam/carmen_log.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace swslam
+{
+void CarmenParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+  MRPT_LOAD_CONFIG_VAR(max_range, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(saturation_rel_tol, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(saturation_min_count, uint64_t, c, s);
+  MRPT_LOAD_CONFIG_VAR(repair_timestamps, bool, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_timestamp_gap, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(default_period, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(laser_only, bool, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_printed_warnings, uint64_t, c, s);
+}
+
+void CarmenParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_range, "[m] >0 forces the max range; 0: log/auto");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(saturation_rel_tol, "saturation cluster width (fraction)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(saturation_min_count, "readings needed in the cluster");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(repair_timestamps, "make each stream strictly increasing");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_timestamp_gap, "[s] larger forward steps are problems");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(default_period, "[s] repair period if none in the log");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(laser_only, "drop ODOM lines");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_printed_warnings, "printed per kind; all counted");
+}
+
+size_t CarmenStats::timestampProblems() const
+{
+  size_t n = 0;
+  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps;
+  return n;
+}
+
+size_t CarmenStats::scans() const
+{
+  size_t n = 0;
+  for (const auto& [label, s] : lasers) n += s.scans;
+  return n;
+}
+
+CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& params,
+                                 WarningSink warn)
+    : path_(path), params_(params), warn_(std::move(warn))
+{
+  stats_.repairing = params_.repair_timestamps;
+  if (!warn_) warn_ = [](const std::string& m) { std::cerr << "warning: " << m << "\n"; };
+  prescan();
+  open();
+}
+
+void CarmenLogReader::open()
+{
+  if (!file_.open(path_)) throw std::runtime_error("carmen: cannot open '" + path_ + "'");
+  buffer_.clear();
+  buffer_pos_ = 0;
+  eof_ = false;
+  line_no_ = 0;
+}
+
+bool CarmenLogReader::nextLine(std::string& line)
+{
+  line.clear();
+  for (;;)
+  {
+    const size_t nl = buffer_.find('\n', buffer_pos_);
+    if (nl != std::string::npos)
+    {
+      line.append(buffer_, buffer_pos_, nl - buffer_pos_);
+      buffer_pos_ = nl + 1;
+      line_no_++;
+      return true;
+    }
+    line.append(buffer_, buffer_pos_, std::string::npos);
+    buffer_.resize(1 << 16);
+    const size_t got = eof_ ? 0 : file_.Read(buffer_.data(), buffer_.size());
+    buffer_.resize(got);
+    buffer_pos_ = 0;
+    if (got == 0)
+    {
+      eof_ = true;
+      if (line.empty()) return false;
+      line_no_++;  // last line without '\n'
+      return true;
+    }
+  }
+}
+
+void CarmenLogReader::prescan()
+{
+  // First pass: each laser's readings (saturation) and each stream's timestamps (repair
+  // period). Malformed lines are skipped silently here; the second pass reports them.
+  open();
+  std::map<std::string, SaturationDetector> detectors;
+  std::map<std::string, std::vector<double>> times;
+  std::string text;
+  while (nextLine(text))
+  {
+    CarmenLine line;
+    try
+    {
+      line = parseCarmenLine(text);
+    }
+    catch (const CarmenLineError&)
+    {
+      continue;
+    }
+    if (line.kind == CarmenLine::Kind::Odometry)
+      times["ODOM"].push_back(line.odometry.timestamp);
+    if (line.kind != CarmenLine::Kind::Laser) continue;
+    const auto& laser = line.laser;
+    times[laser.label].push_back(laser.timestamp);
+    auto it = detectors.try_emplace(laser.label, params_.saturation_rel_tol,
+                                    params_.saturation_min_count).first;
+    for (float r : laser.ranges) it->second.add(r);
+  }
+  for (const auto& [label, d] : detectors)
+  {
+    saturation_[label] = d.threshold();
+    largest_[label] = d.largest();
+  }
+  for (const auto& [stream, t] : times)
+  {
+    const double period =
+        medianPositivePeriod(t, params_.max_timestamp_gap, params_.default_period);
+    stamps_.emplace(stream,
+                    TimestampSequence(period, params_.max_timestamp_gap, params_.repair_timestamps));
+    stats_.timestamps[stream].repair_period = period;
+  }
+}
+
+void CarmenLogReader::warn(size_t& printed, const std::string& msg)
+{
+  if (printed++ < params_.max_printed_warnings) warn_(msg);
+}
+
+void CarmenLogReader::addParam(const std::string& name, const std::string& value)
+{
+  stats_.params++;
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  // Non-numeric values (on/off, device names) belong to parameters the converter does not use.
+  if (end != value.c_str() && *end == '\0' && std::isfinite(v)) log_params_[name] = v;
+}
+
+double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t line)
+{
+  TimestampIssue issue;
+  const double t = stamps_.at(stream).next(raw, issue);
+  auto& counts = stats_.timestamps[stream];
+  counts.count++;
+  if (issue == TimestampIssue::None) return t;
+  (issue == TimestampIssue::NonIncreasing ? counts.non_increasing : counts.forward_jumps)++;
+  if (params_.repair_timestamps) counts.repaired++;
+  warn(printed_timestamps_,
+       path_ + ":" + std::to_string(line) + ": " + stream + " timestamp " + std::to_string(raw) +
+           (issue == TimestampIssue::NonIncreasing ? " does not increase"
+                                                   : " jumps forward by more than " +
+                                                         std::to_string(params_.max_timestamp_gap) +
+                                                         " s") +
+           (params_.repair_timestamps ? ", replaced by " + std::to_string(t) : ""));
+  return t;
+}
+
+bool CarmenLogReader::convertLaser(const CarmenLaser& laser, CarmenRecord& record)
+{
+  const auto geometry = carmenScanGeometry(laser, log_params_, params_, saturation_[laser.label],
+                                           largest_[laser.label]);
+  if (!geometry.warning.empty() && reported_geometry_[laser.label] != geometry.warning)
+  {
+    stats_.geometry_warnings++;
+    reported_geometry_[laser.label] = geometry.warning;
+    warn(printed_geometry_, path_ + ":" + std::to_string(line_no_) + ": " + geometry.warning);
+  }
+  record.raw_timestamp = laser.timestamp;
+  record.timestamp = stampOf(laser.label, laser.timestamp, line_no_);
+  auto scan = carmenScan(laser, geometry, record.timestamp);
+  if (laser.has_pose) record.reference_pose = mrpt::poses::CPose2D(laser.robot_pose);
+
+  auto& s = stats_.lasers[laser.label];
+  const size_t n = laser.ranges.size();
+  s.min_beams = s.scans == 0 ? n : std::min(s.min_beams, n);
+  s.max_beams = std::max(s.max_beams, n);
+  s.scans++;
+  s.rays += n;
+  for (size_t i = 0; i < n; i++) s.invalid_rays += scan->getScanRangeValidity(i) ? 0 : 1;
+  s.aperture = geometry.aperture;
+  s.max_range = geometry.max_range;
+  s.max_range_source = geometry.max_range_source;
+  record.observation = scan;
+  return true;
+}
+
+bool CarmenLogReader::next(CarmenRecord& record)
+{
+  record = CarmenRecord();
+  std::string text;
+  while (nextLine(text))
+  {
+    stats_.lines++;
+    CarmenLine line;
+    try
+    {
+      line = parseCarmenLine(text);
+    }
+    catch (const CarmenLineError& e)
+    {
+      if (stats_.malformed++ == 0) stats_.first_malformed_line = line_no_;
+      warn(printed_malformed_,
+           path_ + ":" + std::to_string(line_no_) + ": malformed line skipped: " + e.what());
+      continue;
+    }
+    record.line = line_no_;
+    switch (line.kind)
+    {
+      case CarmenLine::Kind::Blank: continue;
+      case CarmenLine::Kind::Unknown: stats_.unknown_messages[line.message]++; continue;
+      case CarmenLine::Kind::Param: addParam(line.param_name, line.param_value); continue;
+      case CarmenLine::Kind::Laser: return convertLaser(line.laser, record);
+      case CarmenLine::Kind::Odometry:
+      {
+        if (params_.laser_only)
+        {
+          stats_.odometry_dropped++;
+          continue;
+        }
+        const auto& o = line.odometry;
+        auto obs = mrpt::obs::CObservationOdometry::Create();
+        obs->sensorLabel = "ODOM";
+        record.raw_timestamp = o.timestamp;
+        record.timestamp = stampOf("ODOM", o.timestamp, line_no_);
+        obs->timestamp = mrpt::Clock::fromDouble(record.timestamp);
+        obs->odometry = mrpt::poses::CPose2D(o.pose);
+        obs->hasVelocities = true;
+        obs->velocityLocal = mrpt::math::TTwist2D(o.tv, 0, o.rv);
+        record.observation = obs;
+        stats_.odometry++;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace swslam
