@@ -67,6 +67,9 @@ std::string formatCarmenStats(const CarmenStats& s)
       o << "; kept as logged (use --repair-timestamps)";
     o << "\n";
   }
+  if (s.timestamp_offset != 0)
+    o << "timestamps shifted by +" << s.timestamp_offset
+      << " s (negative times are not representable in MRPT)\n";
   if (s.geometry_warnings) o << "geometry warnings: " << s.geometry_warnings << "\n";
   return o.str();
 }

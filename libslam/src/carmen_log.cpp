@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -113,7 +114,7 @@ void CarmenLogReader::prescan()
     {
       continue;
     }
-    if (line.kind == CarmenLine::Kind::Odometry)
+    if (line.kind == CarmenLine::Kind::Odometry && !params_.laser_only)
       times["ODOM"].push_back(line.odometry.timestamp);
     if (line.kind != CarmenLine::Kind::Laser) continue;
     const auto& laser = line.laser;
@@ -127,6 +128,10 @@ void CarmenLogReader::prescan()
     saturation_[label] = d.threshold();
     largest_[label] = d.largest();
   }
+  double earliest = 0;
+  for (const auto& [stream, t] : times)
+    if (!t.empty()) earliest = std::min(earliest, *std::min_element(t.begin(), t.end()));
+  stats_.timestamp_offset = -earliest;
   for (const auto& [stream, t] : times)
   {
     const double period =
@@ -154,7 +159,7 @@ void CarmenLogReader::addParam(const std::string& name, const std::string& value
 double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t line)
 {
   TimestampIssue issue;
-  const double t = stamps_.at(stream).next(raw, issue);
+  const double t = stamps_.at(stream).next(raw + stats_.timestamp_offset, issue);
   auto& counts = stats_.timestamps[stream];
   counts.count++;
   if (issue == TimestampIssue::None) return t;

@@ -96,6 +96,9 @@ struct CarmenStats
   };
   std::map<std::string, Stamps> timestamps;  ///< by stream
   bool repairing = false;
+  /** [s] added to every timestamp of the log: -(earliest timestamp) if that is negative,
+   * since MRPT cannot represent times before 1970 (Clock::toDouble wraps); else 0. */
+  double timestamp_offset = 0;
   size_t timestampProblems() const;
   size_t geometry_warnings = 0;
   size_t scans() const;
@@ -106,7 +109,7 @@ struct CarmenRecord
 {
   mrpt::obs::CObservation::Ptr observation;  ///< CObservation2DRangeScan or CObservationOdometry
   std::optional<mrpt::poses::CPose2D> reference_pose;  ///< laser lines with x y theta
-  double timestamp = 0;      ///< [s] as written into the observation (repaired or not)
+  double timestamp = 0;      ///< [s] as written into the observation (offset, repaired)
   double raw_timestamp = 0;  ///< [s] as logged
   size_t line = 0;           ///< 1-based line number in the log
 };
