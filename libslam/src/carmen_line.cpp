@@ -23,6 +23,7 @@ class Fields
     std::string tok;
     while (ss >> tok) tokens_.push_back(tok);
   }
+  bool empty() const { return tokens_.empty(); }
   const std::string& message() const { return tokens_.at(0); }
   size_t remaining() const { return tokens_.size() - next_; }
 
@@ -117,7 +118,7 @@ CarmenLine parseCarmenLine(const std::string& line)
 {
   CarmenLine out;
   Fields f(line);
-  if (f.remaining() == 0 && line.find_first_not_of(" \t\r\n") == std::string::npos) return out;
+  if (f.empty()) return out;  // Kind::Blank
   const std::string msg = f.message();
   out.message = msg;
   if (msg[0] == '#') return out;  // Kind::Blank
