@@ -61,6 +61,7 @@ std::string formatCarmenStats(const CarmenStats& s)
   {
     o << stream << " timestamps: " << t.count << ", " << t.non_increasing << " non-increasing, "
       << t.forward_jumps << " forward jumps";
+    if (t.negative) o << ", " << t.negative << " negative (written as 0)";
     if (s.repairing)
       o << "; repaired " << t.repaired << " (period " << t.repair_period << " s)";
     else if (t.non_increasing + t.forward_jumps > 0)
@@ -68,7 +69,7 @@ std::string formatCarmenStats(const CarmenStats& s)
     o << "\n";
   }
   if (s.timestamp_offset != 0)
-    o << "timestamps shifted by +" << s.timestamp_offset
+    o << "laser timestamps negative: all timestamps shifted by +" << s.timestamp_offset
       << " s (negative times are not representable in MRPT)\n";
   if (s.geometry_warnings) o << "geometry warnings: " << s.geometry_warnings << "\n";
   return o.str();

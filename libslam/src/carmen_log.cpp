@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 namespace swslam
@@ -37,7 +38,7 @@ void CarmenParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std:
 size_t CarmenStats::timestampProblems() const
 {
   size_t n = 0;
-  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps;
+  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps + t.negative;
   return n;
 }
 
@@ -60,7 +61,15 @@ CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& pa
 
 void CarmenLogReader::open()
 {
-  if (!file_.open(path_)) throw std::runtime_error("carmen: cannot open '" + path_ + "'");
+  bool ok = false;
+  try
+  {
+    ok = std::filesystem::is_regular_file(path_) && file_.open(path_);
+  }
+  catch (const std::exception&)
+  {
+  }
+  if (!ok) throw std::runtime_error("carmen: cannot open '" + path_ + "'");
   buffer_.clear();
   buffer_pos_ = 0;
   eof_ = false;
@@ -130,7 +139,8 @@ void CarmenLogReader::prescan()
   }
   double earliest = 0;
   for (const auto& [stream, t] : times)
-    if (!t.empty()) earliest = std::min(earliest, *std::min_element(t.begin(), t.end()));
+    if (stream != "ODOM" && !t.empty())
+      earliest = std::min(earliest, *std::min_element(t.begin(), t.end()));
   stats_.timestamp_offset = -earliest;
   for (const auto& [stream, t] : times)
   {
@@ -158,10 +168,19 @@ void CarmenLogReader::addParam(const std::string& name, const std::string& value
 
 double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t line)
 {
-  TimestampIssue issue;
-  const double t = stamps_.at(stream).next(raw + stats_.timestamp_offset, issue);
   auto& counts = stats_.timestamps[stream];
   counts.count++;
+  double shifted = raw + stats_.timestamp_offset;
+  if (shifted < 0)
+  {
+    counts.negative++;
+    warn(printed_timestamps_, path_ + ":" + std::to_string(line) + ": " + stream +
+                                  " timestamp " + std::to_string(raw) +
+                                  " is negative: not representable in MRPT, written as 0");
+    shifted = 0;
+  }
+  TimestampIssue issue;
+  const double t = stamps_.at(stream).next(shifted, issue);
   if (issue == TimestampIssue::None) return t;
   (issue == TimestampIssue::NonIncreasing ? counts.non_increasing : counts.forward_jumps)++;
   if (params_.repair_timestamps) counts.repaired++;

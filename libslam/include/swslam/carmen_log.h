@@ -92,12 +92,14 @@ struct CarmenStats
   struct Stamps
   {
     size_t count = 0, non_increasing = 0, forward_jumps = 0, repaired = 0;
+    size_t negative = 0;       ///< still negative after timestamp_offset: written as 0
     double repair_period = 0;  ///< [s] used when repairing
   };
   std::map<std::string, Stamps> timestamps;  ///< by stream
   bool repairing = false;
-  /** [s] added to every timestamp of the log: -(earliest timestamp) if that is negative,
-   * since MRPT cannot represent times before 1970 (Clock::toDouble wraps); else 0. */
+  /** [s] added to every timestamp of the log: -(earliest laser timestamp) if that is
+   * negative, since MRPT cannot represent times before 1970 (Clock::toDouble wraps); else 0.
+   * Other streams' timestamps still negative after it are written as 0 (and counted). */
   double timestamp_offset = 0;
   size_t timestampProblems() const;
   size_t geometry_warnings = 0;
