@@ -1,6 +1,10 @@
 // Parsing of single CARMEN lines, and the saturation and timestamp rules.
 #include <swslam/carmen_line.h>
+#include <swslam/carmen_log.h>
 #include <swslam/carmen_rules.h>
+#include <swslam/config_keys.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
 
@@ -100,8 +104,8 @@ namespace
 /** Slow, obvious saturation rule: sort everything, take the cluster below the maximum. */
 std::optional<double> slowSaturation(std::vector<double> r, double tol, size_t min_count)
 {
-  r.erase(std::remove_if(r.begin(), r.end(), [](double v) { return !(v > 0) || !std::isfinite(v); }),
-          r.end());
+  const auto bad = [](double v) { return !(v > 0) || !std::isfinite(v); };
+  r.erase(std::remove_if(r.begin(), r.end(), bad), r.end());
   if (r.empty()) return std::nullopt;
   std::sort(r.begin(), r.end());
   const double low = r.back() * (1 - tol);
@@ -183,4 +187,28 @@ TEST(CarmenRules, MedianPeriodIgnoresBadSteps)
                    0.1);
   EXPECT_DOUBLE_EQ(swslam::medianPositivePeriod({0, 0, 0}, 3600, 0.1), 0.1);
   EXPECT_DOUBLE_EQ(swslam::medianPositivePeriod({}, 3600, 0.1), 0.1);
+}
+
+TEST(CarmenParams, LoadStrictlyAndCheckRanges)
+{
+  mrpt::config::CConfigFileMemory cfg;
+  cfg.write("carmen", "max_range", 40.0);
+  cfg.write("carmen", "repair_timestamps", true);
+  const auto p = swslam::loadStrict<swslam::CarmenParams>(cfg, "carmen");
+  EXPECT_DOUBLE_EQ(p.max_range, 40.0);
+  EXPECT_TRUE(p.repair_timestamps);
+  EXPECT_NO_THROW(p.check());
+  cfg.write("carmen", "max_rnage", 1.0);
+  EXPECT_THROW(swslam::loadStrict<swslam::CarmenParams>(cfg, "carmen"), std::invalid_argument);
+  swslam::CarmenParams bad;
+  bad.default_period = 0;
+  try
+  {
+    bad.check();
+    FAIL();
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("default_period"), std::string::npos);
+  }
 }

@@ -1,6 +1,5 @@
 #include "swslam/carmen_log.h"
 
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include <algorithm>
@@ -11,49 +10,12 @@
 
 namespace swslam
 {
-void CarmenParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
-{
-  MRPT_LOAD_CONFIG_VAR(max_range, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(saturation_rel_tol, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(saturation_min_count, uint64_t, c, s);
-  MRPT_LOAD_CONFIG_VAR(repair_timestamps, bool, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_timestamp_gap, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(default_period, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(laser_only, bool, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_printed_warnings, uint64_t, c, s);
-}
-
-void CarmenParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
-{
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_range, "[m] >0 forces the max range; 0: log/auto");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(saturation_rel_tol, "saturation cluster width (fraction)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(saturation_min_count, "readings needed in the cluster");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(repair_timestamps, "make each stream strictly increasing");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_timestamp_gap, "[s] larger forward steps are problems");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(default_period, "[s] repair period if none in the log");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(laser_only, "drop ODOM lines");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_printed_warnings, "printed per kind; all counted");
-}
-
-size_t CarmenStats::timestampProblems() const
-{
-  size_t n = 0;
-  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps + t.negative;
-  return n;
-}
-
-size_t CarmenStats::scans() const
-{
-  size_t n = 0;
-  for (const auto& [label, s] : lasers) n += s.scans;
-  return n;
-}
-
 CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& params,
                                  WarningSink warn)
     : path_(path), params_(params), warn_(std::move(warn))
 {
   stats_.repairing = params_.repair_timestamps;
+  params_.check();
   if (!warn_) warn_ = [](const std::string& m) { std::cerr << "warning: " << m << "\n"; };
   prescan();
   open();
@@ -146,8 +108,8 @@ void CarmenLogReader::prescan()
   {
     const double period =
         medianPositivePeriod(t, params_.max_timestamp_gap, params_.default_period);
-    stamps_.emplace(stream,
-                    TimestampSequence(period, params_.max_timestamp_gap, params_.repair_timestamps));
+    stamps_.emplace(stream, TimestampSequence(period, params_.max_timestamp_gap,
+                                              params_.repair_timestamps));
     stats_.timestamps[stream].repair_period = period;
   }
 }
@@ -194,7 +156,7 @@ double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t li
   return t;
 }
 
-bool CarmenLogReader::convertLaser(const CarmenLaser& laser, CarmenRecord& record)
+void CarmenLogReader::convertLaser(const CarmenLaser& laser, CarmenRecord& record)
 {
   const auto geometry = carmenScanGeometry(laser, log_params_, params_, saturation_[laser.label],
                                            largest_[laser.label]);
@@ -220,7 +182,6 @@ bool CarmenLogReader::convertLaser(const CarmenLaser& laser, CarmenRecord& recor
   s.max_range = geometry.max_range;
   s.max_range_source = geometry.max_range_source;
   record.observation = scan;
-  return true;
 }
 
 bool CarmenLogReader::next(CarmenRecord& record)
@@ -248,7 +209,7 @@ bool CarmenLogReader::next(CarmenRecord& record)
       case CarmenLine::Kind::Blank: continue;
       case CarmenLine::Kind::Unknown: stats_.unknown_messages[line.message]++; continue;
       case CarmenLine::Kind::Param: addParam(line.param_name, line.param_value); continue;
-      case CarmenLine::Kind::Laser: return convertLaser(line.laser, record);
+      case CarmenLine::Kind::Laser: convertLaser(line.laser, record); return true;
       case CarmenLine::Kind::Odometry:
       {
         if (params_.laser_only)

@@ -42,6 +42,9 @@ struct CarmenParams : public mrpt::config::CLoadableOptions
   /** Warnings printed per kind (malformed line, timestamp); all are counted. */
   uint64_t max_printed_warnings = 5;
 
+  /** Throws std::invalid_argument naming the first key out of its range. */
+  void check() const;
+
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                           const std::string& section) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
@@ -137,7 +140,7 @@ class CarmenLogReader
   void warn(size_t& printed, const std::string& msg);
   void addParam(const std::string& name, const std::string& value);
   double stampOf(const std::string& stream, double raw, size_t line);
-  bool convertLaser(const CarmenLaser& laser, CarmenRecord& record);
+  void convertLaser(const CarmenLaser& laser, CarmenRecord& record);
 
   std::string path_;
   CarmenParams params_;
