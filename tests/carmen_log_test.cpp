@@ -271,6 +271,21 @@ TEST(CarmenLog, RawlogRoundTripAndGroundTruth)
   EXPECT_NEAR(gt[4].pose.phi(), 0.5, 1e-6);
 }
 
+TEST(CarmenLog, NonNumericUsedParamIsMalformed)
+{
+  const auto dir = swslam::test::tempDir("carmen_badparam");
+  const auto text = "PARAM robot_front_laser_max far nohost 0\n"
+                    "PARAM robot_use_laser on nohost 0\n" +
+                    laserLine("FLASER", ranges180({}), "0 0 0", "1") + "\n";
+  const auto c = convert(writeLog(dir, text), swslam::CarmenParams());
+  EXPECT_EQ(c.stats.malformed, 1u);
+  EXPECT_EQ(c.stats.first_malformed_line, 1u);
+  EXPECT_EQ(c.stats.params, 1u);
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("robot_front_laser_max"), std::string::npos) << c.warnings[0];
+  EXPECT_EQ(scansOf(c).size(), 1u);
+}
+
 TEST(CarmenLog, BadInputGivesClearErrors)
 {
   const auto dir = swslam::test::tempDir("carmen_bad");

@@ -121,11 +121,14 @@ void CarmenLogReader::warn(size_t& printed, const std::string& msg)
 
 void CarmenLogReader::addParam(const std::string& name, const std::string& value)
 {
-  stats_.params++;
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
-  // Non-numeric values (on/off, device names) belong to parameters the converter does not use.
-  if (end != value.c_str() && *end == '\0' && std::isfinite(v)) log_params_[name] = v;
+  const bool numeric = end != value.c_str() && *end == '\0' && std::isfinite(v);
+  // Non-numeric values (on/off, device names) are fine for parameters the converter ignores.
+  if (!numeric && carmenParamIsUsed(name))
+    throw CarmenLineError("PARAM " + name + ": value '" + value + "' is not a finite number");
+  stats_.params++;
+  if (numeric) log_params_[name] = v;
 }
 
 double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t line)
@@ -195,6 +198,7 @@ bool CarmenLogReader::next(CarmenRecord& record)
     try
     {
       line = parseCarmenLine(text);
+      if (line.kind == CarmenLine::Kind::Param) addParam(line.param_name, line.param_value);
     }
     catch (const CarmenLineError& e)
     {
@@ -208,7 +212,7 @@ bool CarmenLogReader::next(CarmenRecord& record)
     {
       case CarmenLine::Kind::Blank: continue;
       case CarmenLine::Kind::Unknown: stats_.unknown_messages[line.message]++; continue;
-      case CarmenLine::Kind::Param: addParam(line.param_name, line.param_value); continue;
+      case CarmenLine::Kind::Param: continue;
       case CarmenLine::Kind::Laser: convertLaser(line.laser, record); return true;
       case CarmenLine::Kind::Odometry:
       {

@@ -56,6 +56,19 @@ double flaserAperture(const CarmenLaser& laser, const std::string& sensor,
 
 }  // namespace
 
+bool carmenParamIsUsed(const std::string& name)
+{
+  for (const std::string sensor : {"front", "rear"})
+  {
+    for (const char* suffix : {"offset", "side_offset", "angular_offset"})
+      if (name == "robot_" + sensor + "laser_" + suffix) return true;
+    if (name == "robot_" + sensor + "_laser_max" || name == "laser_" + sensor + "_laser_fov" ||
+        name == "laser_" + sensor + "_laser_resolution")
+      return true;
+  }
+  return false;
+}
+
 CarmenScanGeometry carmenScanGeometry(const CarmenLaser& laser, const CarmenLogParams& log_params,
                                       const CarmenParams& params,
                                       std::optional<double> saturation, double largest)

@@ -71,6 +71,10 @@ CarmenScanGeometry carmenScanGeometry(const CarmenLaser& laser, const CarmenLogP
                                       const CarmenParams& params,
                                       std::optional<double> saturation, double largest);
 
+/** True for the PARAM names that carmenScanGeometry() reads (offsets, FOV, resolution,
+ * max range of the front and rear lasers); their values must be numbers. */
+bool carmenParamIsUsed(const std::string& name);
+
 /** The MRPT scan of a laser line: rays invalid when non-finite, <= 0 or >= max_range. */
 mrpt::obs::CObservation2DRangeScan::Ptr carmenScan(const CarmenLaser& laser,
                                                    const CarmenScanGeometry& geometry,
