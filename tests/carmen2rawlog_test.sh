@@ -31,7 +31,7 @@ grep -q "FLASER: 12 scans, beams 180, aperture 180 deg, max_range 81.91 m" "$DIR
 grep -q "invalid rays 6 of 2160" "$DIR/summary.txt" || fail "max-range readings not invalid"
 grep -q "odometry: 12" "$DIR/summary.txt" || fail "odometry count"
 grep -q "malformed lines: 1 (first at line 18)" "$DIR/summary.txt" || fail "malformed count"
-grep -q "FLASER timestamps: 12, 1 non-increasing" "$DIR/summary.txt" || fail "timestamp check"
+grep -q "FLASER: 12 stamps, 1 non-increasing" "$DIR/summary.txt" || fail "timestamp check"
 grep -q ":18: malformed line skipped" "$DIR/warnings.txt" || fail "warning names the line"
 [ "$(grep -vc '^#' "$DIR/gt.tum")" = 12 ] || fail "ground truth lines"
 awk '!/^#/ && NF != 8 { exit 1 }' "$DIR/gt.tum" || fail "ground truth format"

@@ -57,9 +57,11 @@ std::string formatCarmenStats(const CarmenStats& s)
   o << "\n";
   for (const auto& [msg, n] : s.unknown_messages)
     o << "skipped " << msg << " lines: " << n << " (message type not converted)\n";
+  o << "timestamp problems: " << s.timestampProblems() << "\n";
   for (const auto& [stream, t] : s.timestamps)
   {
-    o << stream << " timestamps: " << t.count << ", " << t.non_increasing << " non-increasing, "
+    o << "  ";
+    o << stream << ": " << t.count << " stamps, " << t.non_increasing << " non-increasing, "
       << t.forward_jumps << " forward jumps";
     if (t.negative) o << ", " << t.negative << " negative (written as 0)";
     if (s.repairing)
