@@ -112,8 +112,19 @@ TEST(GraphOptimizerParams, DefaultIniLoadsStrictlyAndRoundTrips)
 {
   mrpt::config::CConfigFile ini(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   const auto p = swslam::loadStrict<swslam::GraphOptimizerParams>(ini, "graph_optimizer");
-  EXPECT_EQ(p.window_size, 30u);
-  EXPECT_EQ(p.max_iterations, 100u);
+  // The file documents the in-class defaults.
+  const swslam::GraphOptimizerParams d;
+  EXPECT_EQ(p.kernel_alpha, d.kernel_alpha);
+  EXPECT_EQ(p.kernel_c, d.kernel_c);
+  EXPECT_EQ(p.window_size, d.window_size);
+  EXPECT_EQ(p.max_iterations, d.max_iterations);
+  EXPECT_EQ(p.lm_initial_lambda, d.lm_initial_lambda);
+  EXPECT_EQ(p.lm_max_lambda, d.lm_max_lambda);
+  EXPECT_EQ(p.relative_cost_tolerance, d.relative_cost_tolerance);
+  EXPECT_EQ(p.step_tolerance, d.step_tolerance);
+  EXPECT_EQ(p.gradient_tolerance, d.gradient_tolerance);
+  EXPECT_EQ(p.robust_odometry_prior, d.robust_odometry_prior);
+  EXPECT_EQ(p.max_iterations, 100u);  // the paper's value
   EXPECT_TRUE(p.isRobust(swslam::EdgeKind::Consecutive));
   EXPECT_TRUE(p.isRobust(swslam::EdgeKind::Loop));
   EXPECT_FALSE(p.isRobust(swslam::EdgeKind::DenseNeighbour));

@@ -59,8 +59,8 @@ TEST(Scan, AnglesAndPointsForAnyFov)
       for (size_t i = 1; i < n; i++) ASSERT_GT(s.angles[i], s.angles[i - 1]);
       for (size_t i = 0; i < n; i++)
       {
-        EXPECT_NEAR(s.points[i].x(), 5 * std::cos(s.angles[i]), 1e-9);
-        EXPECT_NEAR(s.points[i].y(), 5 * std::sin(s.angles[i]), 1e-9);
+        EXPECT_NEAR(s.points[i].x(), 5 * std::cos(s.angles[i]), 1e-5);
+        EXPECT_NEAR(s.points[i].y(), 5 * std::sin(s.angles[i]), 1e-5);
       }
     }
   }
@@ -75,6 +75,11 @@ TEST(Scan, LeftToRightScansAreReorderedByIncreasingAngle)
   EXPECT_NEAR(s.angles.back(), M_PI / 4, 1e-6);
   EXPECT_EQ(s.beam_index.back(), 0);
   EXPECT_NEAR(s.ranges.back(), 1.0, 1e-6);
+  for (size_t i = 0; i < s.size(); i++)
+  {
+    EXPECT_NEAR(s.points[i].x(), s.ranges[i] * std::cos(s.angles[i]), 1e-5);
+    EXPECT_NEAR(s.points[i].y(), s.ranges[i] * std::sin(s.angles[i]), 1e-5);
+  }
 }
 
 TEST(Scan, RejectsInconsistentGeometryWithAMessage)

@@ -26,8 +26,11 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
   std::vector<std::string> known, present;
   known_cfg.getAllKeys(section, known);
   cfg.getAllKeys(section, present);
-  for (const auto& key : present)
+  // MRPT pads names when it writes commented keys: compare trimmed names.
+  for (auto& k : known) k = mrpt::system::trim(k);
+  for (const auto& padded_key : present)
   {
+    const std::string key = mrpt::system::trim(padded_key);
     const bool ok = std::any_of(known.begin(), known.end(), [&](const std::string& k) {
       return mrpt::system::strCmpI(k, key);
     });

@@ -9,8 +9,15 @@ namespace swslam
 {
 RawlogReader::RawlogReader(const std::string& path) : path_(path)
 {
-  if (!file_.open(path))
-    throw std::runtime_error("rawlog: cannot open '" + path + "'");
+  bool opened = false;
+  try
+  {
+    opened = file_.open(path);
+  }
+  catch (const std::exception&)
+  {
+  }
+  if (!opened) throw std::runtime_error("rawlog: cannot open '" + path + "'");
   archive_ = std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(file_);
 }
 

@@ -1,6 +1,7 @@
 #include "swslam/scan.h"
 
 #include <mrpt/core/bits_math.h>
+#include <mrpt/obs/CSinCosLookUpTableFor2DScans.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -37,6 +38,9 @@ Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double m
   s.points.reserve(n);
   s.beam_index.reserve(n);
 
+  // MRPT's cached per-geometry table (float, like the ranges themselves); one per thread.
+  thread_local mrpt::obs::CSinCosLookUpTableFor2DScans sincos_cache;
+  const auto& sc = sincos_cache.getSinCosForScan(obs);
   for (size_t k = 0; k < n; k++)
   {
     // Visit rays in increasing angle whatever the scan direction.
@@ -51,7 +55,7 @@ Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double m
     const double a = beamAngle(i, n, obs.aperture, obs.rightToLeft);
     s.angles.push_back(a);
     s.ranges.push_back(r);
-    s.points.emplace_back(r * std::cos(a), r * std::sin(a));
+    s.points.emplace_back(r * sc.ccos[i], r * sc.csin[i]);
     s.beam_index.push_back(static_cast<int>(i));
   }
   return s;

@@ -1,0 +1,38 @@
+// Benchmark: PLICP vs MRPT's CICP (classic, LM) on scan pairs of a log with reference poses.
+#include <swslam/config_keys.h>
+#include <swslam/matcher_benchmark.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFile.h>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  TCLAP::CmdLine cmd("swslam-bench-matcher: PLICP vs MRPT CICP on scan pairs", ' ', "0.1");
+  TCLAP::ValueArg<std::string> input("i", "input", "Rawlog with 2D scans", true, "", "LOG.rawlog", cmd);
+  TCLAP::ValueArg<std::string> gt("g", "ground-truth", "Reference poses (TUM)", true, "", "GT.tum", cmd);
+  TCLAP::ValueArg<size_t> stride("s", "stride", "Pair scans k and k+K", false, 1, "K", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] section)", false, "", "INI", cmd);
+  try
+  {
+    cmd.parse(argc, argv);
+    swslam::PlicpParams params;
+    if (!config.getValue().empty())
+      params = swslam::loadStrict<swslam::PlicpParams>(mrpt::config::CConfigFile(config.getValue()), "plicp");
+    if (stride.getValue() < 1) throw std::invalid_argument("--stride must be >= 1");
+    const auto data = swslam::loadScansWithTruth(input.getValue(), swslam::readTum(gt.getValue()));
+    const auto& s0 = *data.scans.front();
+    std::cout << "# " << input.getValue() << ": " << data.scans.size() << " scans of "
+              << s0.getScanSize() << " beams over " << s0.aperture * 180 / M_PI << " deg, stride "
+              << stride.getValue() << "\n";
+    for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params))
+      std::cout << swslam::formatRow(row) << std::endl;
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "swslam-bench-matcher: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,47 @@
+#pragma once
+// Benchmark of scan matchers on consecutive scan pairs with reference poses: our PLICP
+// against MRPT's CICP (classic and Levenberg-Marquardt), each from identity and from the
+// reference relative pose. Used by apps/swslam-bench-matcher.
+
+#include <swslam/plicp/plicp.h>
+#include <swslam/tum_io.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <string>
+#include <vector>
+
+namespace swslam
+{
+/** Scans of one log with the vehicle's reference pose at each. */
+struct ScansWithTruth
+{
+  std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+  std::vector<mrpt::poses::CPose2D> truth;  ///< vehicle pose at scans[k]
+  size_t skipped_without_truth = 0;
+};
+
+/** Reads the laser scans of `rawlog_path` (of one sensor: the first scan's label) and pairs
+ * them with `truth`: by index when the counts match, otherwise by timestamp (closest within
+ * `max_dt` seconds). Throws std::runtime_error if nothing can be paired. */
+ScansWithTruth loadScansWithTruth(const std::string& rawlog_path,
+                                  const std::vector<StampedPose>& truth, double max_dt = 0.01);
+
+/** Figures of one method from one initial guess, over all pairs. */
+struct MatcherRow
+{
+  std::string method, init;
+  size_t pairs = 0, failures = 0;
+  double median_us = 0, p95_us = 0, mean_iters = 0;
+  double trans_median_m = 0, trans_rmse_m = 0, rot_rmse_deg = 0, frac_under_5cm = 0;
+};
+
+/** Runs every method and initial guess on pairs (k, k + stride). Errors are measured on
+ * the vehicle's relative pose. */
+std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t stride,
+                                          const PlicpParams& plicp_params);
+
+/** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
+std::string formatRow(const MatcherRow& row);
+
+}  // namespace swslam

@@ -1,0 +1,60 @@
+#pragma once
+// Point-to-line correspondences of PLICP (paper sec. II.A, after Censi 2008): for each
+// current point, transformed into the reference frame, the nearest reference point j1
+// and its closer neighbour j2 along the scan.
+
+#include <swslam/scan.h>
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace swslam::plicp
+{
+/** One point-to-line correspondence, indices into the valid rays of the scans. */
+struct Correspondence
+{
+  int i = -1;   ///< current point
+  int j1 = -1;  ///< nearest reference point
+  int j2 = -1;  ///< neighbour of j1 along the scan (see secondPoint())
+  double dist = 0;  ///< point-to-point distance from the transformed current point to j1
+  bool operator==(const Correspondence& o) const { return i == o.i && j1 == o.j1 && j2 == o.j2; }
+};
+
+/** Precomputed per reference scan: jump tables over ranges (Censi's "up/down bigger/smaller")
+ * that let the search skip runs of rays that cannot be closer than the best so far. */
+struct ReferenceIndex
+{
+  std::vector<int> up_bigger, up_smaller, down_bigger, down_smaller;
+  std::vector<Eigen::Vector2d> dirs;  ///< unit direction of each ray
+  std::vector<double> pseudo;         ///< pseudoAngle() of each ray, non-decreasing
+  bool circular = false;  ///< the scan closes on itself (aperture ~ 360 deg)
+
+  explicit ReferenceIndex(const Scan& ref);
+};
+
+/** A cheap monotone stand-in for atan2(y, x): in [-2, 2), 2 per half turn. */
+double pseudoAngle(double x, double y);
+
+/** Fast search: expected O(n) over all current points. Starts each search from the previous
+ * point's position in the reference scan, walks away from the point's bearing in both
+ * directions and stops or jumps only when the skipped rays provably cannot be closer.
+ * Returns, for each current point with a reference point within `max_dist`, its
+ * correspondence (in increasing i). Ties are broken by the lower reference index. */
+std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
+                                                const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                                double max_dist, double min_segment = 0);
+
+/** Slow, obviously correct version: checks every reference point. Same output contract. */
+std::vector<Correspondence> findCorrespondencesBruteForce(
+    const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref, double max_dist,
+    double min_segment = 0);
+
+/** The second reference point j2 that, with j1, defines the local line. On each side of j1
+ * along the scan (wrapping on circular scans) take the first ray at least `min_segment`
+ * from j1 (walking at most 8 rays); of the two, the one closer to `p`; -1 if neither exists.
+ * With min_segment = 0 this is Censi's choice, the closer of j1-1 and j1+1. A longer segment
+ * keeps range noise from tilting the normal on dense scans (doc/plicp.md). */
+int secondPoint(const Scan& ref, bool circular, int j1, const Eigen::Vector2d& p,
+                double min_segment);
+
+}  // namespace swslam::plicp

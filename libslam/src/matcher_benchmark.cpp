@@ -1,0 +1,169 @@
+#include "swslam/matcher_benchmark.h"
+
+#include "swslam/rawlog_reader.h"
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/slam/CICP.h>
+#include <mrpt/system/CTicTac.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+namespace swslam
+{
+namespace
+{
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::poses::CPose2D;
+
+/** A matcher under test: relative vehicle pose of `cur` w.r.t. `ref` from `guess`. */
+struct Estimate
+{
+  CPose2D pose;
+  int iterations = 0;
+  bool ok = true;
+};
+using MatcherFn =
+    std::function<Estimate(const CObservation2DRangeScan&, const CObservation2DRangeScan&, const CPose2D&)>;
+
+double quantile(std::vector<double> v, double q)
+{
+  if (v.empty()) return 0;
+  const size_t k = std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[k];
+}
+
+MatcherFn plicpMatcher(const PlicpParams& params)
+{
+  return [params](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                  const CPose2D& guess) {
+    // PLICP works in the sensor frame: convert the vehicle-frame guess and result.
+    const CPose2D s(a.sensorPose);
+    const ReferenceScan ref(scanFromObservation(a));
+    const MatchResult r = matchScans(ref, scanFromObservation(b), -s + guess + s, params);
+    return Estimate{s + r.pose - s, r.iterations, r.ok()};
+  };
+}
+
+MatcherFn cicpMatcher(mrpt::slam::TICPAlgorithm algorithm)
+{
+  return [algorithm](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                     const CPose2D& guess) {
+    mrpt::maps::CSimplePointsMap m1, m2;
+    m1.insertObservation(a);
+    m2.insertObservation(b);
+    mrpt::slam::CICP icp;  // MRPT's default parameters
+    icp.options.ICP_algorithm = algorithm;
+    mrpt::slam::CICP::TReturnInfo info;
+    const auto pdf = icp.Align(&m1, &m2, guess, info);
+    return Estimate{pdf->getMeanVal(), static_cast<int>(info.nIterations), true};
+  };
+}
+}  // namespace
+
+ScansWithTruth loadScansWithTruth(const std::string& rawlog_path,
+                                  const std::vector<StampedPose>& truth, double max_dt)
+{
+  std::vector<CObservation2DRangeScan::Ptr> scans;
+  RawlogReader reader(rawlog_path);
+  RawlogItem item;
+  while (reader.next(item))
+  {
+    auto s = std::dynamic_pointer_cast<CObservation2DRangeScan>(item.observation);
+    if (s && (scans.empty() || s->sensorLabel == scans.front()->sensorLabel)) scans.push_back(s);
+  }
+  ScansWithTruth out;
+  if (scans.size() == truth.size())
+  {
+    out.scans = std::move(scans);
+    for (const auto& t : truth) out.truth.push_back(t.pose);
+    return out;
+  }
+  for (const auto& s : scans)
+  {
+    const double t = mrpt::Clock::toDouble(s->timestamp);
+    const auto it = std::lower_bound(truth.begin(), truth.end(), t,
+                                     [](const StampedPose& p, double v) { return p.t < v; });
+    const StampedPose* best = nullptr;
+    for (auto c : {it, it == truth.begin() ? it : std::prev(it)})
+      if (c != truth.end() && std::abs(c->t - t) <= max_dt && (!best || std::abs(c->t - t) < std::abs(best->t - t)))
+        best = &*c;
+    if (!best)
+    {
+      out.skipped_without_truth++;
+      continue;
+    }
+    out.scans.push_back(s);
+    out.truth.push_back(best->pose);
+  }
+  if (out.scans.size() < 2)
+    throw std::runtime_error("benchmark: fewer than 2 scans of '" + rawlog_path +
+                             "' have a reference pose (scans: " + std::to_string(scans.size()) +
+                             ", reference poses: " + std::to_string(truth.size()) + ")");
+  return out;
+}
+
+std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t stride,
+                                          const PlicpParams& plicp_params)
+{
+  const std::vector<std::pair<std::string, MatcherFn>> methods = {
+      {"plicp", plicpMatcher(plicp_params)},
+      {"cicp-classic", cicpMatcher(mrpt::slam::icpClassic)},
+      {"cicp-lm", cicpMatcher(mrpt::slam::icpLevenbergMarquardt)}};
+  std::vector<MatcherRow> rows;
+  for (const std::string init : {"identity", "reference"})
+  {
+    for (const auto& [name, match] : methods)
+    {
+      MatcherRow row{name, init};
+      std::vector<double> times_us, trans_err;
+      double sq_t = 0, sq_r = 0, iters = 0;
+      for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+      {
+        const CPose2D ref_motion = data.truth[k + stride] - data.truth[k];
+        const CPose2D guess = init == "identity" ? CPose2D() : ref_motion;
+        mrpt::system::CTicTac timer;
+        const Estimate e = match(*data.scans[k], *data.scans[k + stride], guess);
+        times_us.push_back(timer.Tac() * 1e6);
+        const double et = (e.pose.translation() - ref_motion.translation()).norm();
+        const double er = std::remainder(e.pose.phi() - ref_motion.phi(), 2 * M_PI);
+        trans_err.push_back(et);
+        sq_t += et * et;
+        sq_r += er * er;
+        iters += e.iterations;
+        row.failures += e.ok ? 0 : 1;
+        row.pairs++;
+      }
+      if (row.pairs == 0) continue;
+      row.median_us = quantile(times_us, 0.5);
+      row.p95_us = quantile(times_us, 0.95);
+      row.mean_iters = iters / row.pairs;
+      row.trans_median_m = quantile(trans_err, 0.5);
+      row.trans_rmse_m = std::sqrt(sq_t / row.pairs);
+      row.rot_rmse_deg = std::sqrt(sq_r / row.pairs) * 180 / M_PI;
+      row.frac_under_5cm =
+          std::count_if(trans_err.begin(), trans_err.end(), [](double x) { return x < 0.05; }) /
+          static_cast<double>(row.pairs);
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+std::string formatRow(const MatcherRow& r)
+{
+  char buf[512];
+  std::snprintf(buf, sizeof(buf),
+                "%-13s init=%-9s pairs=%zu median_us=%.1f p95_us=%.1f iters=%.1f "
+                "trans_median_m=%.4f trans_rmse_m=%.4f rot_rmse_deg=%.3f frac_under_5cm=%.3f "
+                "failures=%zu",
+                r.method.c_str(), r.init.c_str(), r.pairs, r.median_us, r.p95_us, r.mean_iters,
+                r.trans_median_m, r.trans_rmse_m, r.rot_rmse_deg, r.frac_under_5cm, r.failures);
+  return buf;
+}
+
+}  // namespace swslam

@@ -1,0 +1,170 @@
+#include "swslam/plicp/plicp.h"
+
+#include "swslam/plicp/closed_form.h"
+#include "swslam/plicp/covariance.h"
+#include "swslam/plicp/outliers.h"
+
+#include <cmath>
+
+namespace swslam
+{
+using plicp::Correspondence;
+
+const char* toString(MatchStatus s)
+{
+  switch (s)
+  {
+    case MatchStatus::Converged: return "converged";
+    case MatchStatus::MaxIterations: return "max_iterations";
+    case MatchStatus::TooFewCorrespondences: return "too_few_correspondences";
+    case MatchStatus::Diverged: return "diverged";
+    case MatchStatus::InvalidInput: return "invalid_input";
+  }
+  return "unknown";
+}
+
+namespace
+{
+std::vector<Eigen::Vector2d> transformed(const Scan& s, const Eigen::Vector3d& x)
+{
+  const double c = std::cos(x.z()), sn = std::sin(x.z());
+  std::vector<Eigen::Vector2d> out(s.size());
+  for (size_t i = 0; i < s.size(); i++)
+  {
+    const auto& p = s.points[i];
+    out[i] = {c * p.x() - sn * p.y() + x.x(), sn * p.x() + c * p.y() + x.y()};
+  }
+  return out;
+}
+
+Eigen::Vector2d normalOf(const Scan& ref, const Correspondence& k)
+{
+  const Eigen::Vector2d e = (ref.points[k.j1] - ref.points[k.j2]).normalized();
+  return {-e.y(), e.x()};
+}
+
+/** Point-to-line distance of each correspondence (eq. 1's residual). */
+std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref,
+                               const std::vector<Correspondence>& cs)
+{
+  std::vector<double> e(cs.size());
+  for (size_t k = 0; k < cs.size(); k++)
+    e[k] = std::abs(normalOf(ref, cs[k]).dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
+  return e;
+}
+
+std::string sensorMismatch(const Scan& a, const Scan& b)
+{
+  if (a.sensor_label == b.sensor_label && a.beam_count == b.beam_count &&
+      std::abs(a.aperture - b.aperture) < 1e-6 && (a.sensor_pose - b.sensor_pose).norm() < 1e-9)
+    return {};
+  auto describe = [](const Scan& s) {
+    return "'" + s.sensor_label + "' (" + std::to_string(s.beam_count) + " beams, " +
+           std::to_string(s.aperture * 180 / M_PI) + " deg)";
+  };
+  return "reference and current scans come from different sensors: " + describe(a) + " vs " +
+         describe(b);
+}
+
+MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
+{
+  r.status = s;
+  r.message = std::move(msg);
+  return r;
+}
+}  // namespace
+
+MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
+                       const mrpt::poses::CPose2D& initial_guess, const PlicpParams& params)
+{
+  const Scan& ref = reference.scan;
+  MatchResult res;
+  res.ref_valid_rays = ref.size();
+  res.cur_valid_rays = cur.size();
+  res.pose = initial_guess;
+  if (const auto why = sensorMismatch(ref, cur); !why.empty())
+    return fail(res, MatchStatus::InvalidInput, why);
+  const size_t min_n = static_cast<size_t>(params.min_correspondences);
+  if (ref.size() < min_n || cur.size() < min_n)
+    return fail(res, MatchStatus::TooFewCorrespondences,
+                "too few valid rays: reference " + std::to_string(ref.size()) + ", current " +
+                    std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
+
+  const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
+  Eigen::Vector3d x = x0;
+  std::vector<Correspondence> kept, previous, before_previous;
+  // Coarse to fine: a wide matching radius first widens the basin of convergence, then it
+  // shrinks to max_correspondence_dist each time the estimate settles.
+  double max_dist = std::max(params.initial_correspondence_dist, params.max_correspondence_dist);
+  auto settled = [&]() {
+    if (max_dist <= params.max_correspondence_dist) return true;
+    max_dist = std::max(params.max_correspondence_dist, 0.5 * max_dist);
+    previous.clear();
+    before_previous.clear();
+    return false;
+  };
+  res.status = MatchStatus::MaxIterations;
+  for (int it = 1; it <= params.max_iterations; it++)
+  {
+    res.iterations = it;
+    const auto cur_in_ref = transformed(cur, x);
+    auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref, max_dist,
+                                            params.min_segment_length);
+    // One match per reference point, once the radius is final: while the scans are still far
+    // apart many points share a nearest neighbour, and thinning them then shrinks the basin.
+    if (params.remove_doubles && max_dist <= params.max_correspondence_dist)
+      found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
+    kept = plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
+                              params.adaptive_quantile, params.adaptive_mult);
+    if (kept.size() < min_n)
+      return fail(res, MatchStatus::TooFewCorrespondences,
+                  std::to_string(kept.size()) + " valid correspondences at iteration " +
+                      std::to_string(it) + " (need " + std::to_string(min_n) + ")");
+    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
+    if ((kept == previous || kept == before_previous) && settled())
+    {
+      res.status = MatchStatus::Converged;
+      break;
+    }
+    std::vector<plicp::PointToLine> terms;
+    terms.reserve(kept.size());
+    for (const auto& k : kept) terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
+    const auto next = plicp::solvePointToLine(terms, x);
+    if (!next || !next->allFinite())
+      return fail(res, MatchStatus::Diverged, "closed-form step failed at iteration " + std::to_string(it));
+    const Eigen::Vector3d step(next->x() - x.x(), next->y() - x.y(),
+                               std::remainder(next->z() - x.z(), 2 * M_PI));
+    x = *next;
+    before_previous = std::move(previous);
+    previous = kept;
+    if (step.head<2>().norm() < params.epsilon_xy && std::abs(step.z()) < params.epsilon_theta &&
+        settled())
+    {
+      res.status = MatchStatus::Converged;
+      break;
+    }
+  }
+  res.pose = mrpt::poses::CPose2D(x.x(), x.y(), x.z());
+  if ((x.head<2>() - x0.head<2>()).norm() > params.max_correction_xy ||
+      std::abs(std::remainder(x.z() - x0.z(), 2 * M_PI)) > params.max_correction_theta)
+    return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
+
+  // Residuals and covariance (eq. 4-10) at the final estimate.
+  const auto cur_in_ref = transformed(cur, x);
+  const auto errors = lineErrors(ref, cur_in_ref, kept);
+  res.correspondences = kept.size();
+  res.sum_sq_residuals = 0;
+  for (double e : errors) res.sum_sq_residuals += e * e;
+  std::vector<plicp::CovarianceTerm> cov_terms;
+  cov_terms.reserve(kept.size());
+  for (const auto& k : kept)
+  {
+    auto dir = [](const Scan& s, int j) { return Eigen::Vector2d(std::cos(s.angles[j]), std::sin(s.angles[j])); };
+    cov_terms.push_back({dir(cur, k.i), dir(ref, k.j1), dir(ref, k.j2), cur.ranges[k.i],
+                         ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
+  }
+  res.covariance = plicp::plicpCovariance(cov_terms, x, params.range_sigma);
+  return res;
+}
+
+}  // namespace swslam

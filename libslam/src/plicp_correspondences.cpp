@@ -1,0 +1,199 @@
+#include "swslam/plicp/correspondences.h"
+
+#include <cmath>
+#include <limits>
+
+namespace swslam::plicp
+{
+namespace
+{
+constexpr int kNone = std::numeric_limits<int>::max();
+
+/** Candidate (squared distance, index) ordering: nearer first, then lower index. */
+bool better(double d2, int k, double best_d2, int best_k)
+{
+  return d2 < best_d2 || (d2 == best_d2 && best_k != kNone && k < best_k);
+}
+
+/** Walks the reference scan from `start` in one direction (`step` = +1 counter-clockwise,
+ * -1 clockwise), updating (best_d2, best_k). Trig-free: the bearing offset of ray k from the
+ * point is tracked with pseudo-angles (monotone in the angle, range 4 per turn) and bounded
+ * with cross and dot products. Stops when nothing beyond can be nearer; jumps over runs of
+ * rays whose ranges keep them farther than the best so far. */
+void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, double P,
+          double p_pseudo, int start, int step, double& best_d2, int& best_k)
+{
+  const int n = static_cast<int>(ref.size());
+  const auto& bigger = step > 0 ? idx.up_bigger : idx.down_bigger;
+  const auto& smaller = step > 0 ? idx.up_smaller : idx.down_smaller;
+  bool wrapped = false;
+  int k = start;
+  for (int guard = 0; guard <= 2 * n; guard++)
+  {
+    if (k < 0 || k >= n)
+    {
+      // Walks wrap around even on partial scans: across the blind sector, rays at the other
+      // end of the scan can be the nearest ones.
+      if (wrapped) return;
+      wrapped = true;
+      k = k < 0 ? n - 1 : 0;
+    }
+    // Offset in pseudo-angle units (2 = half a turn), growing along the walk.
+    const double offset = step * (idx.pseudo[k] - p_pseudo) + (wrapped ? 4.0 : 0.0);
+    if (offset > 2.0) return;  // past half a turn: the other walk covers the rest
+    // Distance from p to the ray of bearing offset delta is at least P sin(delta) for delta
+    // below 90 deg and at least P beyond it.
+    const Eigen::Vector2d& u = idx.dirs[k];
+    const double along = u.dot(p), across = step * (u.y() * p.x() - u.x() * p.y());
+    const double bound = along >= 0 ? across : P;
+    if (bound > 0 && bound * bound > best_d2) return;
+    const double d2 = (ref.points[k] - p).squaredNorm();
+    if (better(d2, k, best_d2, best_k))
+    {
+      best_d2 = d2;
+      best_k = k;
+    }
+    // Rays up to the next longer (shorter) one are no farther (nearer) from the origin than
+    // ray k, so their distance to p is at least |P - r_k|: skip them when that beats nothing.
+    const double gap = P - ref.ranges[k];
+    int next = k + step;
+    if (gap * gap > best_d2) next = gap > 0 ? bigger[k] : smaller[k];
+    k = next;
+  }
+}
+}  // namespace
+
+double pseudoAngle(double x, double y)
+{
+  // "Diamond angle": 0..4 over a turn from +x, counter-clockwise; shifted to [-2, 2).
+  double a;
+  if (y >= 0) a = x >= 0 ? y / (x + y) : 1 - x / (-x + y);
+  else a = x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
+  if (!(x != 0 || y != 0)) a = 0;
+  return a >= 2 ? a - 4 : a;
+}
+
+ReferenceIndex::ReferenceIndex(const Scan& ref)
+{
+  const int n = static_cast<int>(ref.size());
+  up_bigger.assign(n, n);
+  up_smaller.assign(n, n);
+  down_bigger.assign(n, -1);
+  down_smaller.assign(n, -1);
+  const auto& r = ref.ranges;
+  dirs.resize(n);
+  pseudo.resize(n);
+  for (int i = 0; i < n; i++)
+  {
+    dirs[i] = {std::cos(ref.angles[i]), std::sin(ref.angles[i])};
+    pseudo[i] = pseudoAngle(dirs[i].x(), dirs[i].y());
+    // Keep the sequence non-decreasing at +pi, where the pseudo-angle wraps to -2.
+    if (i > 0 && pseudo[i] < pseudo[i - 1]) pseudo[i] += 4;
+  }
+  // Each table entry follows the chain of its neighbour: amortized O(n).
+  for (int i = n - 2; i >= 0; i--)
+  {
+    int j = i + 1;
+    while (j < n && r[j] <= r[i]) j = up_bigger[j];
+    up_bigger[i] = j;
+    j = i + 1;
+    while (j < n && r[j] >= r[i]) j = up_smaller[j];
+    up_smaller[i] = j;
+  }
+  for (int i = 1; i < n; i++)
+  {
+    int j = i - 1;
+    while (j >= 0 && r[j] <= r[i]) j = down_bigger[j];
+    down_bigger[i] = j;
+    j = i - 1;
+    while (j >= 0 && r[j] >= r[i]) j = down_smaller[j];
+    down_smaller[i] = j;
+  }
+  if (n >= 2)
+  {
+    const double step = ref.aperture / std::max<size_t>(1, ref.beam_count - 1);
+    circular = ref.aperture + 2 * step >= 2 * M_PI;
+  }
+}
+
+int secondPoint(const Scan& ref, bool circular, int j1, const Eigen::Vector2d& p,
+                double min_segment)
+{
+  const int n = static_cast<int>(ref.size());
+  constexpr int kMaxWalk = 8;  // rays walked along the scan to reach min_segment
+  // The first ray on one side of j1 at least min_segment away from it, or -1.
+  auto along = [&](int step) {
+    for (int s = 1; s <= kMaxWalk && s < n; s++)
+    {
+      int k = j1 + step * s;
+      if (circular) k = (k + n) % n;
+      if (k < 0 || k >= n || k == j1) return -1;
+      if ((ref.points[k] - ref.points[j1]).norm() >= min_segment) return k;
+    }
+    return -1;
+  };
+  const int lo = along(-1), hi = along(+1);
+  if (lo < 0 || hi < 0) return std::max(lo, hi);
+  return (ref.points[lo] - p).squaredNorm() <= (ref.points[hi] - p).squaredNorm() ? lo : hi;
+}
+
+std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
+                                                const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                                double max_dist, double min_segment)
+{
+  std::vector<Correspondence> out;
+  const int n = static_cast<int>(ref.size());
+  if (n < 2) return out;
+  out.reserve(cur_in_ref.size());
+  int up = 0;  // first reference ray at or after the point's bearing (n if none)
+  for (size_t i = 0; i < cur_in_ref.size(); i++)
+  {
+    const Eigen::Vector2d& p = cur_in_ref[i];
+    const double P = p.norm();
+    const double pp = pseudoAngle(p.x(), p.y());
+    // Move the start from the previous point's position: O(1) expected for ordered scans.
+    while (up < n && index.pseudo[up] < pp) up++;
+    while (up > 0 && index.pseudo[up - 1] >= pp) up--;
+
+    double best_d2 = max_dist * max_dist;
+    int best_k = kNone;
+    walk(ref, index, p, P, pp, up, +1, best_d2, best_k);
+    walk(ref, index, p, P, pp, up - 1, -1, best_d2, best_k);
+    if (best_k == kNone) continue;
+    const int j2 = secondPoint(ref, index.circular, best_k, p, min_segment);
+    if (j2 < 0) continue;
+    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
+  }
+  return out;
+}
+
+std::vector<Correspondence> findCorrespondencesBruteForce(
+    const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref, double max_dist,
+    double min_segment)
+{
+  std::vector<Correspondence> out;
+  const int n = static_cast<int>(ref.size());
+  if (n < 2) return out;
+  const ReferenceIndex index(ref);
+  for (size_t i = 0; i < cur_in_ref.size(); i++)
+  {
+    double best_d2 = max_dist * max_dist;
+    int best_k = -1;
+    for (int k = 0; k < n; k++)
+    {
+      const double d2 = (ref.points[k] - cur_in_ref[i]).squaredNorm();
+      if (d2 < best_d2)  // strict: the lowest index wins ties
+      {
+        best_d2 = d2;
+        best_k = k;
+      }
+    }
+    if (best_k < 0) continue;
+    const int j2 = secondPoint(ref, index.circular, best_k, cur_in_ref[i], min_segment);
+    if (j2 < 0) continue;
+    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
+  }
+  return out;
+}
+
+}  // namespace swslam::plicp

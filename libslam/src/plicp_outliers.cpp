@@ -1,0 +1,45 @@
+#include "swslam/plicp/outliers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam::plicp
+{
+std::vector<Correspondence> keepNearestPerReference(const std::vector<Correspondence>& in,
+                                                    int ref_size)
+{
+  std::vector<int> owner(ref_size, -1);  // index into `in` of the nearest match of each j1
+  for (int k = 0; k < static_cast<int>(in.size()); k++)
+  {
+    int& o = owner[in[k].j1];
+    if (o < 0 || in[k].dist < in[o].dist) o = k;
+  }
+  std::vector<Correspondence> out;
+  out.reserve(in.size());
+  for (int k = 0; k < static_cast<int>(in.size()); k++)
+    if (owner[in[k].j1] == k) out.push_back(in[k]);
+  return out;
+}
+
+std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
+                                        const std::vector<double>& errors, double keep_fraction,
+                                        double adaptive_quantile, double adaptive_mult)
+{
+  if (in.empty()) return {};
+  std::vector<double> sorted = errors;
+  auto quantile = [&](double q) {
+    const size_t k = std::min(sorted.size() - 1,
+                              static_cast<size_t>(std::ceil(q * sorted.size())) - (q > 0 ? 1 : 0));
+    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+    return sorted[k];
+  };
+  const double threshold =
+      std::min(quantile(keep_fraction), adaptive_mult * quantile(adaptive_quantile));
+  std::vector<Correspondence> out;
+  out.reserve(in.size());
+  for (size_t k = 0; k < in.size(); k++)
+    if (errors[k] <= threshold) out.push_back(in[k]);
+  return out;
+}
+
+}  // namespace swslam::plicp

@@ -1,0 +1,135 @@
+// The fast correspondence search equals the brute-force one (as csm checks in debug).
+#include <swslam/plicp/correspondences.h>
+#include <swslam/plicp/outliers.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using namespace swslam::plicp;
+
+namespace
+{
+void expectSameAsBruteForce(const Scan& ref, const Scan& cur, const mrpt::poses::CPose2D& q,
+                            double max_dist)
+{
+  std::vector<Eigen::Vector2d> pts;
+  for (const auto& p : cur.points)
+  {
+    double gx, gy;
+    q.composePoint(p.x(), p.y(), gx, gy);
+    pts.emplace_back(gx, gy);
+  }
+  const ReferenceIndex index(ref);
+  const auto fast = findCorrespondences(ref, index, pts, max_dist);
+  const auto slow = findCorrespondencesBruteForce(ref, pts, max_dist);
+  ASSERT_EQ(fast.size(), slow.size());
+  for (size_t k = 0; k < fast.size(); k++)
+  {
+    ASSERT_EQ(fast[k], slow[k]) << "point " << slow[k].i << ": fast j1 " << fast[k].j1
+                                << " slow j1 " << slow[k].j1;
+    ASSERT_DOUBLE_EQ(fast[k].dist, slow[k].dist);
+  }
+}
+}  // namespace
+
+TEST(PlicpCorrespondences, FastSearchEqualsBruteForce)
+{
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const auto world = test::clutteredWorld(1);
+  for (double fov_deg : {180.0, 270.0, 360.0})
+  {
+    const size_t beams = fov_deg == 180 ? 181 : (fov_deg == 270 ? 1081 : 720);
+    const double fov = fov_deg * M_PI / 180 * (fov_deg == 360 ? (beams - 1.0) / beams : 1.0);
+    for (int trial = 0; trial < 6; trial++)
+    {
+      const mrpt::poses::CPose2D ref_pose(2 * U(rng), -2 + U(rng), U(rng));
+      const mrpt::poses::CPose2D motion(0.5 * U(rng), 0.5 * U(rng), 0.3 * U(rng));
+      const auto ref = scanFromObservation(
+          test::simulateObservation(world, ref_pose, beams, fov, 30, 0.03, rng));
+      const auto cur = scanFromObservation(
+          test::simulateObservation(world, ref_pose + motion, beams, fov, 30, 0.03, rng));
+      // From the truth, from a perturbed guess, and from identity; several thresholds.
+      for (double max_dist : {0.3, 1.5, 1e9})
+      {
+        expectSameAsBruteForce(ref, cur, motion, max_dist);
+        expectSameAsBruteForce(ref, cur, mrpt::poses::CPose2D(), max_dist);
+        expectSameAsBruteForce(ref, cur, mrpt::poses::CPose2D(U(rng), U(rng), 2 * U(rng)), max_dist);
+      }
+    }
+  }
+}
+
+TEST(PlicpCorrespondences, JumpTablesPointAtTheNextLongerAndShorterRay)
+{
+  Scan s;
+  s.ranges = {3, 1, 2, 5, 4, 4, 1};
+  s.beam_count = s.ranges.size();
+  s.aperture = M_PI;
+  for (size_t i = 0; i < s.ranges.size(); i++)
+  {
+    s.angles.push_back(-M_PI / 2 + M_PI * i / 6);
+    s.points.emplace_back(s.ranges[i] * std::cos(s.angles[i]), s.ranges[i] * std::sin(s.angles[i]));
+  }
+  const ReferenceIndex idx(s);
+  const int n = 7;
+  for (int i = 0; i < n; i++)
+  {
+    int ub = i + 1, us = i + 1, db = i - 1, ds = i - 1;
+    while (ub < n && s.ranges[ub] <= s.ranges[i]) ub++;
+    while (us < n && s.ranges[us] >= s.ranges[i]) us++;
+    while (db >= 0 && s.ranges[db] <= s.ranges[i]) db--;
+    while (ds >= 0 && s.ranges[ds] >= s.ranges[i]) ds--;
+    EXPECT_EQ(idx.up_bigger[i], ub) << i;
+    EXPECT_EQ(idx.up_smaller[i], us) << i;
+    EXPECT_EQ(idx.down_bigger[i], db) << i;
+    EXPECT_EQ(idx.down_smaller[i], ds) << i;
+  }
+}
+
+TEST(PlicpOutliers, KeepsOnlyTheNearestMatchPerReferencePoint)
+{
+  std::vector<Correspondence> in = {{0, 5, 6, 0.3}, {1, 5, 4, 0.1}, {2, 7, 8, 0.2}, {3, 5, 6, 0.2}};
+  const auto out = keepNearestPerReference(in, 10);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].i, 1);
+  EXPECT_EQ(out[1].i, 2);
+}
+
+TEST(PlicpOutliers, TrimsTheWorstFractionAndAdaptiveOutliers)
+{
+  std::vector<Correspondence> in;
+  std::vector<double> err;
+  for (int k = 0; k < 100; k++)
+  {
+    in.push_back({k, k, k + 1, 0});
+    err.push_back(k < 95 ? 0.01 * (1 + k % 5) : 10.0);  // 5 gross outliers
+  }
+  const auto kept = trimByError(in, err, 0.99, 0.7, 3.0);
+  EXPECT_EQ(kept.size(), 95u);
+  for (const auto& c : kept) EXPECT_LT(c.i, 95);
+  // Median of the 100 errors is 0.03; 19 of each of 0.01..0.05: 57 are <= 0.03.
+  EXPECT_EQ(trimByError(in, err, 0.5, 1.0, 100).size(), 57u);
+}
+
+TEST(PlicpCorrespondences, PseudoAngleIsMonotoneInTheAngle)
+{
+  double previous = -3;
+  for (int k = 0; k < 3600; k++)
+  {
+    const double a = -M_PI + 2 * M_PI * k / 3600;
+    const double pa = pseudoAngle(std::cos(a), std::sin(a));
+    EXPECT_GT(pa, previous) << "angle " << a;
+    EXPECT_GE(pa, -2.0);
+    EXPECT_LT(pa, 2.0);
+    previous = pa;
+  }
+  EXPECT_NEAR(pseudoAngle(1, 0), 0, 1e-15);
+  EXPECT_NEAR(pseudoAngle(0, 1), 1, 1e-15);
+  EXPECT_NEAR(pseudoAngle(0, -1), -1, 1e-15);
+}

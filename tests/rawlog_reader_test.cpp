@@ -1,0 +1,178 @@
+#include <swslam/rawlog_reader.h>
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+
+namespace
+{
+mrpt::obs::CObservation2DRangeScan::Ptr makeScan(int k)
+{
+  std::mt19937 rng(k);
+  auto o = std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+      test::simulateObservation(test::roomWorld(), {0.1 * k, 0, 0}, 181, M_PI, 30, 0.01, rng));
+  o->timestamp = mrpt::Clock::fromDouble(100.0 + 0.1 * k);
+  return o;
+}
+
+/** Observation-only rawlog: scans interleaved with odometry. */
+void writeObservationRawlog(const std::string& path, int n, bool gz)
+{
+  auto write = [&](auto& f) {
+    auto arch = mrpt::serialization::archiveFrom(f);
+    for (int k = 0; k < n; k++)
+    {
+      arch << *makeScan(k);
+      mrpt::obs::CObservationOdometry odo;
+      odo.odometry = mrpt::poses::CPose2D(0.1 * k, 0, 0);
+      odo.timestamp = mrpt::Clock::fromDouble(100.05 + 0.1 * k);
+      arch << odo;
+    }
+  };
+  if (gz)
+  {
+    mrpt::io::CFileGZOutputStream f(path);
+    write(f);
+  }
+  else
+  {
+    mrpt::io::CFileOutputStream f(path);
+    write(f);
+  }
+}
+
+size_t countScans(RawlogReader& r)
+{
+  size_t scans = 0;
+  RawlogItem item;
+  while (r.next(item))
+    if (std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation)) scans++;
+  return scans;
+}
+}  // namespace
+
+TEST(RawlogReader, ReadsObservationOnlyRawlogsPlainAndGzip)
+{
+  const auto dir = test::tempDir("rawlog_obs");
+  for (bool gz : {false, true})
+  {
+    const auto path = dir + (gz ? "/a.rawlog" : "/b.rawlog");
+    writeObservationRawlog(path, 10, gz);
+    RawlogReader r(path);
+    RawlogItem item;
+    for (int k = 0; k < 10; k++)
+    {
+      ASSERT_TRUE(r.next(item));
+      auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation);
+      ASSERT_TRUE(scan);
+      EXPECT_NEAR(mrpt::Clock::toDouble(scan->timestamp), 100.0 + 0.1 * k, 1e-6);
+      ASSERT_TRUE(r.next(item));
+      EXPECT_TRUE(std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(item.observation));
+    }
+    EXPECT_FALSE(r.next(item));
+    EXPECT_EQ(r.entriesRead(), 20u);
+  }
+}
+
+TEST(RawlogReader, ReadsActionSensoryFramePairs)
+{
+  const auto dir = test::tempDir("rawlog_sf");
+  const auto path = dir + "/sf.rawlog";
+  {
+    mrpt::io::CFileGZOutputStream f(path);
+    auto arch = mrpt::serialization::archiveFrom(f);
+    for (int k = 0; k < 5; k++)
+    {
+      mrpt::obs::CActionCollection acts;
+      mrpt::obs::CActionRobotMovement2D mv;
+      mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opts;
+      mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0.01), opts);
+      acts.insert(mv);
+      arch << acts;
+      mrpt::obs::CSensoryFrame sf;
+      sf.insert(makeScan(k));
+      arch << sf;
+    }
+  }
+  RawlogReader r(path);
+  RawlogItem item;
+  int scans = 0, actions = 0;
+  while (r.next(item))
+  {
+    if (item.odometry_increment)
+    {
+      actions++;
+      EXPECT_NEAR(item.odometry_increment->poseChange->getMeanVal().x(), 0.1, 1e-9);
+    }
+    if (std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation)) scans++;
+  }
+  EXPECT_EQ(scans, 5);
+  EXPECT_EQ(actions, 5);
+}
+
+TEST(RawlogReader, TruncatedFileGivesTheEntryIndexAndKeepsWhatWasRead)
+{
+  const auto dir = test::tempDir("rawlog_trunc");
+  const auto path = dir + "/full.rawlog", cut = dir + "/cut.rawlog";
+  writeObservationRawlog(path, 10, false);
+  const auto size = std::filesystem::file_size(path);
+  std::filesystem::copy_file(path, cut);
+  std::filesystem::resize_file(cut, size / 2 + 7);  // cut in the middle of an entry
+  RawlogReader r(cut);
+  RawlogItem item;
+  size_t read = 0;
+  try
+  {
+    while (r.next(item)) read++;
+    FAIL() << "a truncated rawlog must not look like a clean end";
+  }
+  catch (const RawlogError& e)
+  {
+    EXPECT_EQ(e.entry(), read);
+    EXPECT_GE(read, 8u);
+    EXPECT_NE(std::string(e.what()).find("entry #" + std::to_string(read)), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(RawlogReader, CorruptBytesAreAnErrorNotACrash)
+{
+  const auto dir = test::tempDir("rawlog_corrupt");
+  const auto path = dir + "/c.rawlog";
+  writeObservationRawlog(path, 6, false);
+  {
+    std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(std::filesystem::file_size(path) / 2));
+    for (int k = 0; k < 64; k++) f.put(static_cast<char>(0xA5));
+  }
+  RawlogReader r(path);
+  EXPECT_THROW(countScans(r), RawlogError);
+}
+
+TEST(RawlogReader, MissingFileIsAClearError)
+{
+  EXPECT_THROW(RawlogReader("/nonexistent/dir/x.rawlog"), std::runtime_error);
+}
+
+TEST(RawlogReader, ReadsMrptsBundledMalagaDataset)
+{
+  const std::string path =
+      std::string(SWSLAM_MRPT_DATASETS) + "/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "mrpt-common not installed: " << path;
+  RawlogReader r(path);
+  EXPECT_EQ(countScans(r), 225u);  // rawlog-edit --info: 449 objects, 224 actions + 225 frames
+}
