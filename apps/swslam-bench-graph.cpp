@@ -89,7 +89,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> datasets("", "mrpt-datasets", "MRPT datasets directory", false,
                                         "/usr/share/mrpt/datasets", "DIR", cmd);
   TCLAP::ValueArg<int> repeats("", "repeats", "timed runs per solver (median)", false, 5, "N", cmd);
-  cmd.parse(argc, argv);
+  if (!cmd.parse(argc, argv)) return 1;  // bad command line (message printed) or --help
   try
   {
     std::vector<BenchGraph> graphs;

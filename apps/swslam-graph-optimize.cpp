@@ -24,7 +24,7 @@ int main(int argc, char** argv)
                                        false, "", "A", cmd);
     TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
     TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
-    cmd.parse(argc, argv);
+    if (!cmd.parse(argc, argv)) return 1;  // bad command line (message printed) or --help
 
     swslam::GraphOptimizerParams params;
     if (config.isSet())
