@@ -31,15 +31,24 @@ std::vector<swslam::Pose2> posesOf(const swslam::PoseGraph& g)
   return p;
 }
 
-BenchGraph gridGraph(size_t nodes, size_t edges, double wrong, unsigned seed)
+/** Grid walk of `nodes` in a (2 extent + 1)^2 m area; `dense` earlier nodes linked to each
+ * node besides its predecessor, loops up to `edges` in total, `wrong` share of wrong loops. */
+BenchGraph gridGraph(size_t nodes, size_t edges, size_t dense, int extent, double wrong,
+                     unsigned seed)
 {
   swslam::SyntheticGraphOptions o;
   o.nodes = nodes, o.total_edges = edges, o.wrong_loop_fraction = wrong, o.seed = seed;
-  o.grid_half_extent = std::max(5, static_cast<int>(std::sqrt(nodes) / 4));
+  o.dense_neighbours = dense, o.grid_half_extent = extent;
   auto s = swslam::makeGridWalkGraph(o);
-  return {"grid-" + std::to_string(nodes) + "n-" + std::to_string(s.graph.edgeCount()) + "e",
-          std::move(s.graph), s.truth};
+  const std::string name = "grid-" + std::to_string(nodes) + "n-" +
+                           std::to_string(s.graph.edgeCount()) + "e-" +
+                           std::to_string(s.good_loops) + "loops-" +
+                           std::to_string(2 * extent + 1) + "m";
+  return {name, std::move(s.graph), s.truth};
 }
+
+/** Area growing with the node count, so that node density and loop density stay alike. */
+int extentFor(size_t nodes) { return std::max(5, static_cast<int>(std::sqrt(nodes) / 2)); }
 
 void printRun(const BenchGraph& g, const SolverRun& r)
 {
@@ -57,7 +66,7 @@ void printRun(const BenchGraph& g, const SolverRun& r)
  * each after jittering the window's poses (so every update has work to do). */
 void windowCost(size_t nodes, size_t window, int updates)
 {
-  BenchGraph g = gridGraph(nodes, 3 * nodes, 0, 7);
+  BenchGraph g = gridGraph(nodes, 3 * nodes, 2, extentFor(nodes), 0, 7);
   swslam::GraphOptimizerParams params;
   params.window_size = window;
   std::mt19937 rng(3);
@@ -96,9 +105,13 @@ int main(int argc, char** argv)
     const std::string circle = datasets.getValue() + "/graph_2d_circle_50nodes";
     graphs.push_back({"mrpt-circle-50", swslam::loadGraph(circle + ".graph"),
                       posesOf(swslam::loadGraph(circle + "_groundtruth.graph"))});
-    graphs.push_back(gridGraph(638, 1952, 0, 1));
-    graphs.push_back(gridGraph(2000, 6000, 0, 2));
-    graphs.push_back(gridGraph(10000, 30000, 0, 3));
+    // The paper's Table I size, shaped like its graph: each node linked to its 3 predecessors
+    // (consecutive + dense neighbours), the rest loops; then a loop-heavy graph of the same
+    // size (a small area revisited over and over), and larger ones.
+    graphs.push_back(gridGraph(638, 1952, 2, 12, 0, 1));
+    graphs.push_back(gridGraph(638, 1952, 1, 5, 0, 1));
+    graphs.push_back(gridGraph(2000, 6000, 2, extentFor(2000), 0, 2));
+    graphs.push_back(gridGraph(10000, 30000, 2, extentFor(10000), 0, 3));
 
     swslam::GraphOptimizerParams l2;
     l2.kernel_alpha = 2;
@@ -123,10 +136,10 @@ int main(int argc, char** argv)
     std::printf("\n== Sliding-window update cost vs graph size (alpha = 0, c = 3)\n");
     for (size_t n : {100, 1000, 10000}) windowCost(n, 30, 200);
 
-    std::printf("\n== Wrong loops: error vs truth after full optimization (grid 638n)\n");
+    std::printf("\n== Wrong loops: error vs truth after full optimization (grid 638n, 17 m)\n");
     for (double wrong : {0.1, 0.2, 0.3})
     {
-      BenchGraph g = gridGraph(638, 1952, wrong, 11);
+      BenchGraph g = gridGraph(638, 1952, 1, 8, wrong, 11);
       for (double alpha : {2.0, 0.0, -2.0})
       {
         swslam::GraphOptimizerParams p;

@@ -60,14 +60,16 @@ SyntheticGraph makeGridWalkGraph(const SyntheticGraphOptions& o)
     out.graph.addNode(k, mrpt::poses::CPose2D(estimate.x(), estimate.y(), estimate.z()));
   }
   for (size_t k = 1; k < o.nodes; ++k) out.graph.addEdge(k - 1, k, odo[k - 1], EdgeKind::Consecutive);
-  for (size_t k = 2; k < o.nodes && out.graph.edgeCount() < o.total_edges; ++k)
-    out.graph.addEdge(k - 2, k, noisyMeasurement(relativePose(t[k - 2], t[k]), o, rng),
-                      EdgeKind::DenseNeighbour);
+  for (size_t back = 2; back <= o.dense_neighbours + 1; ++back)
+    for (size_t k = back; k < o.nodes && out.graph.edgeCount() < o.total_edges; ++k)
+      out.graph.addEdge(k - back, k, noisyMeasurement(relativePose(t[k - back], t[k]), o, rng),
+                        EdgeKind::DenseNeighbour);
 
   std::vector<std::pair<size_t, size_t>> candidates;
   for (size_t k = 0; k < o.nodes; ++k)
     for (size_t j = 0; j + o.loop_min_gap <= k; ++j)
-      if ((t[k] - t[j]).head<2>().norm() < o.loop_radius) candidates.emplace_back(j, k);
+      if (k - j > o.dense_neighbours + 1 && (t[k] - t[j]).head<2>().norm() < o.loop_radius)
+        candidates.emplace_back(j, k);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   for (const auto& [j, k] : candidates)
   {

@@ -1,9 +1,10 @@
 #pragma once
 // Sparse normal equations H dx = -g of a pose graph, stored in 3x3 blocks: the pattern is
 // built once per problem, then each linearization only adds into fixed value slots, and
-// each damped solve reuses the symbolic factorization. Small systems (sliding windows) use
-// Eigen's simplicial LDL^T; large ones CHOLMOD's supernodal Cholesky, measurably faster
-// there (doc/graph-optimization.md).
+// each damped solve reuses the symbolic factorization. Eigen's simplicial LDL^T (AMD
+// ordering) is used while its factor stays sparse, as along a trajectory with few loops;
+// when the factor is dense (an area revisited over and over), CHOLMOD's supernodal
+// Cholesky takes over, measurably faster there (doc/graph-optimization.md).
 
 #include <Eigen/Core>
 #include <Eigen/CholmodSupport>
@@ -39,8 +40,10 @@ class NormalEquations
   /** True if the supernodal CHOLMOD factorization is used. */
   bool usesCholmod() const { return use_cholmod_; }
 
-  /** Systems of at least this many scalar unknowns are factorized by CHOLMOD. */
-  static constexpr int kCholmodMinDimension = 3000;
+  /** CHOLMOD takes over for systems of at least this many unknowns whose simplicial factor
+   * holds more than kCholmodMinFillPerColumn non-zeros per column. */
+  static constexpr int kCholmodMinDimension = 300;
+  static constexpr double kCholmodMinFillPerColumn = 40.0;
 
  private:
   int slot(int row, int col) const;  // index into H_.valuePtr() of (row, col), row >= col

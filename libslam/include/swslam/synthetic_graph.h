@@ -17,6 +17,7 @@ struct SyntheticGraphOptions
   size_t nodes = 638;
   size_t total_edges = 1952;     ///< target before wrong loops; fewer if candidates run out
   int grid_half_extent = 5;      ///< the walk stays in [-e, e]^2 grid cells
+  size_t dense_neighbours = 1;   ///< node k also linked to k-2 .. k-1-dense_neighbours
   double sigma_xy = 0.05;        ///< [m] noise of every good measurement
   double sigma_theta = 0.01;     ///< [rad]
   double loop_radius = 1.5;      ///< [m] loop candidates: true distance below this
@@ -32,7 +33,8 @@ struct SyntheticGraph
   size_t good_loops = 0, wrong_loops = 0;
 };
 
-/** Node k-1 -> k consecutive; k-2 -> k dense-neighbour; then loops up to total_edges. */
+/** Node k-1 -> k consecutive; k-2 -> k (and further back, see dense_neighbours)
+ * dense-neighbour; then loops up to total_edges. */
 SyntheticGraph makeGridWalkGraph(const SyntheticGraphOptions& options);
 
 struct TruthError
