@@ -7,8 +7,7 @@ namespace swslam
 {
 NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs)
     : H_(3 * free_blocks, 3 * free_blocks),
-      g_(Eigen::VectorXd::Zero(3 * free_blocks)),
-      use_cholmod_(false)
+      g_(Eigen::VectorXd::Zero(3 * free_blocks))
 {
   std::vector<Eigen::Triplet<double>> pattern;
   pattern.reserve(6 * free_blocks + 9 * pairs.size());
@@ -27,6 +26,13 @@ NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<in
   for (int i = 0; i < g_.size(); ++i) diagonal_slots_[i] = slot(i, i);
   damped_ = H_;
   simplicial_.analyzePattern(damped_);
+  const double fill = simplicial_.factorNonZeros() / std::max<Eigen::Index>(1, g_.size());
+  if (g_.size() >= kCholmodMinDimension && fill > kCholmodMinFillPerColumn)
+  {
+    // A dense factor (an area revisited over and over): CHOLMOD's supernodal Cholesky.
+    use_cholmod_ = true;
+    cholmod_.analyzePattern(damped_);
+  }
 }
 
 int NormalEquations::slot(int row, int col) const
@@ -81,14 +87,6 @@ bool NormalEquations::solveDamped(double lambda, Eigen::VectorXd& dx)
   }
   simplicial_.factorize(damped_);
   if (simplicial_.info() != Eigen::Success) return false;
-  const double fill = double(simplicial_.matrixL().nestedExpression().nonZeros()) / g_.size();
-  if (g_.size() >= kCholmodMinDimension && fill > kCholmodMinFillPerColumn)
-  {
-    // A dense factor (many loops): CHOLMOD's supernodal factorization from now on.
-    use_cholmod_ = true;
-    cholmod_.analyzePattern(damped_);
-    return solveDamped(lambda, dx);
-  }
   dx = simplicial_.solve(-g_);
   return simplicial_.info() == Eigen::Success && dx.allFinite();
 }

@@ -27,7 +27,7 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
   size_t max_iterations = 100;        ///< LM iterations (paper: 100)
   double lm_initial_lambda = 1e-4;    ///< damping relative to diag(H) at the first iteration
   double lm_max_lambda = 1e12;        ///< give up (converged or stuck) beyond this damping
-  double relative_cost_tolerance = 1e-9;  ///< stop when the cost decreases by less than this
+  double relative_cost_tolerance = 1e-6;  ///< stop when the cost decreases by less than this
   double step_tolerance = 1e-10;      ///< stop when |dx| < tol * (|x| + tol)
   double gradient_tolerance = 1e-12;  ///< stop when max |gradient| is below this
 

@@ -40,8 +40,8 @@ class NormalEquations
   /** True if the supernodal CHOLMOD factorization is used. */
   bool usesCholmod() const { return use_cholmod_; }
 
-  /** CHOLMOD takes over for systems of at least this many unknowns whose simplicial factor
-   * holds more than kCholmodMinFillPerColumn non-zeros per column. */
+  /** CHOLMOD is used for systems of at least this many unknowns whose factor holds more
+   * than kCholmodMinFillPerColumn non-zeros per column (decided by the symbolic analysis). */
   static constexpr int kCholmodMinDimension = 300;
   static constexpr double kCholmodMinFillPerColumn = 40.0;
 
@@ -53,8 +53,14 @@ class NormalEquations
   Eigen::SparseMatrix<double> damped_;
   std::vector<int> diagonal_slots_;  // per scalar row, slot of H(i, i)
   Eigen::VectorXd g_;
-  bool use_cholmod_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> simplicial_;
+  /** Simplicial LDL^T that tells the size of its factor right after the symbolic analysis. */
+  struct SimplicialSolver : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
+  {
+    double factorNonZeros() const { return m_nonZerosPerCol.cast<double>().sum(); }
+  };
+
+  bool use_cholmod_ = false;
+  SimplicialSolver simplicial_;
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholmod_;
 };
 
