@@ -24,12 +24,6 @@ struct BenchGraph
   std::vector<swslam::Pose2> truth;  // empty if unknown
 };
 
-std::vector<swslam::Pose2> posesOf(const swslam::PoseGraph& g)
-{
-  std::vector<swslam::Pose2> p;
-  for (const auto id : g.nodeIds()) p.emplace_back(g.pose(id).x(), g.pose(id).y(), g.pose(id).phi());
-  return p;
-}
 
 /** Grid walk of `nodes` in a (2 extent + 1)^2 m area; `dense` earlier nodes linked to each
  * node besides its predecessor, loops up to `edges` in total, `wrong` share of wrong loops. */
@@ -104,7 +98,7 @@ int main(int argc, char** argv)
     std::vector<BenchGraph> graphs;
     const std::string circle = datasets.getValue() + "/graph_2d_circle_50nodes";
     graphs.push_back({"mrpt-circle-50", swslam::loadGraph(circle + ".graph"),
-                      posesOf(swslam::loadGraph(circle + "_groundtruth.graph"))});
+                      swslam::truthFromGraph(swslam::loadGraph(circle + "_groundtruth.graph"))});
     // The paper's Table I size, shaped like its graph: each node linked to its 3 predecessors
     // (consecutive + dense neighbours), the rest loops; then a loop-heavy graph of the same
     // size (a small area revisited over and over), and larger ones.

@@ -6,20 +6,11 @@
 
 #include <gtest/gtest.h>
 
-namespace
-{
-std::vector<swslam::Pose2> posesOf(const swslam::PoseGraph& g)
-{
-  std::vector<swslam::Pose2> p;
-  for (const auto id : g.nodeIds()) p.emplace_back(g.pose(id).x(), g.pose(id).y(), g.pose(id).phi());
-  return p;
-}
-}  // namespace
 
 TEST(GraphRobustness, MrptCircleGraphConvergesToItsGroundTruth)
 {
   const std::string base = std::string(SWSLAM_MRPT_DATASETS) + "/graph_2d_circle_50nodes";
-  const auto truth = posesOf(swslam::loadGraph(base + "_groundtruth.graph"));
+  const auto truth = swslam::truthFromGraph(swslam::loadGraph(base + "_groundtruth.graph"));
   for (double alpha : {2.0, 0.0})
   {
     auto graph = swslam::loadGraph(base + ".graph");

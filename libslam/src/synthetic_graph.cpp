@@ -92,6 +92,19 @@ SyntheticGraph makeGridWalkGraph(const SyntheticGraphOptions& o)
   return out;
 }
 
+std::vector<Pose2> truthFromGraph(const PoseGraph& graph)
+{
+  std::vector<Pose2> truth;
+  for (const auto id : graph.nodeIds())
+  {
+    if (id != truth.size())
+      throw std::invalid_argument("truthFromGraph: node ids must be 0..n-1, found " + std::to_string(id));
+    const auto& p = graph.pose(id);
+    truth.emplace_back(p.x(), p.y(), p.phi());
+  }
+  return truth;
+}
+
 TruthError compareToTruth(const PoseGraph& graph, const std::vector<Pose2>& truth)
 {
   TruthError err;

@@ -43,6 +43,10 @@ struct TruthError
   double rmse_theta = 0;           ///< [rad]
 };
 
+/** The poses of a ground-truth graph whose node ids are 0..n-1, indexed by id (e.g. MRPT's
+ * `*_groundtruth.graph`). Throws std::invalid_argument for other ids. */
+std::vector<Pose2> truthFromGraph(const PoseGraph& graph);
+
 /** Position and heading error of every node against `truth` (node id = index), with no
  * alignment: both share the gauge node's pose. Throws std::invalid_argument if a node id
  * has no truth. */
