@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-
 TEST(GraphRobustness, MrptCircleGraphConvergesToItsGroundTruth)
 {
   const std::string base = std::string(SWSLAM_MRPT_DATASETS) + "/graph_2d_circle_50nodes";
