@@ -66,6 +66,32 @@ std::string sensorMismatch(const Scan& a, const Scan& b)
          describe(b);
 }
 
+/** Correspondences within `radius`, then outlier rejection (doubles only at the final
+ * radius: while the scans are still far apart many points share a nearest neighbour, and
+ * thinning them then shrinks the basin of convergence). */
+std::vector<Correspondence> selectCorrespondences(const ReferenceScan& reference,
+                                                  const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                                  double radius, const PlicpParams& params)
+{
+  const Scan& ref = reference.scan;
+  auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref, radius,
+                                          params.min_segment_length);
+  if (params.remove_doubles && radius <= params.max_correspondence_dist)
+    found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
+  return plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
+                            params.adaptive_quantile, params.adaptive_mult);
+}
+
+/** Convergence test of a step: the epsilons at the final radius; at a coarse radius only
+ * settling is needed (2% of the radius, 0.3 deg), the fine stages refine it. */
+bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& params)
+{
+  const bool coarse = radius > params.max_correspondence_dist;
+  const double eps_xy = coarse ? 0.02 * radius : params.epsilon_xy;
+  const double eps_th = coarse ? 0.005 : params.epsilon_theta;
+  return step.head<2>().norm() < eps_xy && std::abs(step.z()) < eps_th;
+}
+
 MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
 {
   r.status = s;
@@ -92,13 +118,21 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
   Eigen::Vector3d x = x0;
+  const double fine = params.max_correspondence_dist;
+  // Coarse to fine: when the guess matches few points within the final radius, a wide radius
+  // first widens the basin of convergence; it halves each time the estimate settles.
+  double radius = fine;
+  if (params.initial_correspondence_dist > fine)
+  {
+    const auto probe = plicp::findCorrespondences(ref, reference.index, transformed(cur, x), fine,
+                                                  params.min_segment_length);
+    if (probe.size() < params.coarse_start_fraction * cur.size())
+      radius = params.initial_correspondence_dist;
+  }
   std::vector<Correspondence> kept, previous, before_previous;
-  // Coarse to fine: a wide matching radius first widens the basin of convergence, then it
-  // shrinks to max_correspondence_dist each time the estimate settles.
-  double max_dist = std::max(params.initial_correspondence_dist, params.max_correspondence_dist);
   auto settled = [&]() {
-    if (max_dist <= params.max_correspondence_dist) return true;
-    max_dist = std::max(params.max_correspondence_dist, 0.5 * max_dist);
+    if (radius <= fine) return true;
+    radius = std::max(fine, 0.5 * radius);
     previous.clear();
     before_previous.clear();
     return false;
@@ -107,15 +141,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   for (int it = 1; it <= params.max_iterations; it++)
   {
     res.iterations = it;
-    const auto cur_in_ref = transformed(cur, x);
-    auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref, max_dist,
-                                            params.min_segment_length);
-    // One match per reference point, once the radius is final: while the scans are still far
-    // apart many points share a nearest neighbour, and thinning them then shrinks the basin.
-    if (params.remove_doubles && max_dist <= params.max_correspondence_dist)
-      found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
-    kept = plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
-                              params.adaptive_quantile, params.adaptive_mult);
+    kept = selectCorrespondences(reference, transformed(cur, x), radius, params);
     if (kept.size() < min_n)
       return fail(res, MatchStatus::TooFewCorrespondences,
                   std::to_string(kept.size()) + " valid correspondences at iteration " +
@@ -137,8 +163,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
     x = *next;
     before_previous = std::move(previous);
     previous = kept;
-    if (step.head<2>().norm() < params.epsilon_xy && std::abs(step.z()) < params.epsilon_theta &&
-        settled())
+    if (isSmallStep(step, radius, params) && settled())
     {
       res.status = MatchStatus::Converged;
       break;

@@ -20,7 +20,8 @@ struct PlicpParams : public mrpt::config::CLoadableOptions
   double epsilon_xy = 1e-4;          ///< [m] stop when the step's translation is below
   double epsilon_theta = 1e-4;       ///< [rad] (ini: epsilon_theta_DEG) and its rotation below
   double max_correspondence_dist = 1.0;  ///< [m] farther point pairs are not matched ...
-  double initial_correspondence_dist = 4;  ///< [m] ... after a coarse-to-fine start from this
+  double initial_correspondence_dist = 4.0;  ///< [m] ... after a coarse-to-fine start from this
+  double coarse_start_fraction = 0.5;  ///< start coarse if the guess matches fewer points than this
   double min_segment_length = 0.2;   ///< [m] shortest j1-j2 segment defining a normal
   bool remove_doubles = true;        ///< keep one match per reference point (at the final radius)
   double trim_keep_fraction = 0.95;  ///< keep at most this fraction of the best matches
