@@ -304,6 +304,20 @@ void validateScenario(const Scenario& sc)
   require(o.yaw_noise_std >= 0, "odometry", "yaw_noise_std_DEG", "must be >= 0");
 }
 
+std::string formatScenario(const Scenario& sc)
+{
+  mrpt::config::CConfigFileMemory c;
+  sc.world.saveToConfigFile(c, "world");
+  sc.terrain.saveToConfigFile(c, "terrain");
+  sc.vegetation.saveToConfigFile(c, "vegetation");
+  sc.vehicle.saveToConfigFile(c, "vehicle");
+  sc.sensor.saveToConfigFile(c, "sensor");
+  sc.odometry.saveToConfigFile(c, "odometry");
+  std::string text;
+  c.getContent(text);
+  return text;
+}
+
 Scenario loadScenario(const std::string& path)
 {
   if (!std::filesystem::is_regular_file(path))

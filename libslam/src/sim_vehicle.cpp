@@ -1,6 +1,5 @@
 #include "swslam/sim_vehicle.h"
 
-#include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,22 +11,6 @@ namespace
 {
 constexpr double kSampleSpacing = 0.2;  // [m] between dense samples
 
-// Uniform Catmull-Rom segment from p1 to p2: position, first and second derivative.
-struct CatmullRom
-{
-  Eigen::Vector2d c0, c1, c2, c3;
-  CatmullRom(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2,
-             const Eigen::Vector2d& p3)
-      : c0(p1),
-        c1(0.5 * (p2 - p0)),
-        c2(0.5 * (2 * p0 - 5 * p1 + 4 * p2 - p3)),
-        c3(0.5 * (-p0 + 3 * p1 - 3 * p2 + p3))
-  {
-  }
-  Eigen::Vector2d at(double u) const { return c0 + u * (c1 + u * (c2 + u * c3)); }
-  Eigen::Vector2d d1(double u) const { return c1 + u * (2 * c2 + 3 * u * c3); }
-  Eigen::Vector2d d2(double u) const { return 2 * c2 + 6 * u * c3; }
-};
 }  // namespace
 
 VehiclePath::VehiclePath(const std::vector<Eigen::Vector2d>& waypoints, bool closed, double speed)
@@ -50,14 +33,14 @@ VehiclePath::VehiclePath(const std::vector<Eigen::Vector2d>& waypoints, bool clo
     return waypoints[k];
   };
   const long segments = static_cast<long>(closed ? n : n - 1);
-  pts_.push_back(waypoints[0]);
-  s_.push_back(0);
-  heading_.push_back(0);
   for (long k = 0; k < segments; k++)
   {
-    const CatmullRom seg(P(k - 1), P(k), P(k + 1), P(k + 2));
-    const int steps = std::max(8, static_cast<int>(std::ceil((P(k + 1) - P(k)).norm() /
-                                                             kSampleSpacing)));
+    const Eigen::Vector2d p0 = P(k - 1), p1 = P(k), p2 = P(k + 1), p3 = P(k + 2);
+    segments_.push_back({p1, 0.5 * (p2 - p0), 0.5 * (2 * p0 - 5 * p1 + 4 * p2 - p3),
+                         0.5 * (-p0 + 3 * p1 - 3 * p2 + p3)});
+    const Segment& seg = segments_.back();
+    const int steps =
+        std::max(8, static_cast<int>(std::ceil((p2 - p1).norm() / kSampleSpacing)));
     for (int j = (k == 0 ? 0 : 1); j <= steps; j++)
     {
       const double u = static_cast<double>(j) / steps;
@@ -70,32 +53,28 @@ VehiclePath::VehiclePath(const std::vector<Eigen::Vector2d>& waypoints, bool clo
         max_curvature_ = kappa;
         max_curvature_point_ = p;
       }
-      double h = std::atan2(d.y(), d.x());
-      if (k == 0 && j == 0)
-      {
-        heading_[0] = h;
-        continue;
-      }
-      // Unwrap so that interpolation between samples never jumps by 2 pi.
-      h = heading_.back() + mrpt::math::wrapToPi(h - heading_.back());
-      s_.push_back(s_.back() + (p - pts_.back()).norm());
+      s_.push_back(pts_.empty() ? 0.0 : s_.back() + (p - pts_.back()).norm());
       pts_.push_back(p);
-      heading_.push_back(h);
+      seg_.push_back(static_cast<size_t>(k));
+      u_.push_back(u);
     }
   }
 }
 
 mrpt::poses::CPose2D VehiclePath::poseAt(double t) const
 {
+  // Arc length -> spline parameter by interpolating the dense table, then the exact
+  // spline point with its tangent as heading.
   const double s = std::clamp(t * speed_, 0.0, length());
-  const size_t i = std::min<size_t>(
-      static_cast<size_t>(std::upper_bound(s_.begin(), s_.end(), s) - s_.begin()), s_.size() - 1);
-  const size_t i0 = i - 1;
-  const double ds = s_[i] - s_[i0];
-  const double f = ds > 0 ? (s - s_[i0]) / ds : 0.0;
-  const Eigen::Vector2d p = pts_[i0] + f * (pts_[i] - pts_[i0]);
-  const double h = heading_[i0] + f * (heading_[i] - heading_[i0]);
-  return mrpt::poses::CPose2D(p.x(), p.y(), mrpt::math::wrapToPi(h));
+  const size_t i = std::clamp<size_t>(
+      static_cast<size_t>(std::upper_bound(s_.begin(), s_.end(), s) - s_.begin()), 1,
+      s_.size() - 1);
+  const size_t k = seg_[i];
+  const double u0 = seg_[i - 1] == k ? u_[i - 1] : 0.0;  // a segment's start is u = 0
+  const double ds = s_[i] - s_[i - 1];
+  const double u = u0 + (ds > 0 ? (s - s_[i - 1]) / ds : 0.0) * (u_[i] - u0);
+  const Eigen::Vector2d p = segments_[k].at(u), d = segments_[k].d1(u);
+  return mrpt::poses::CPose2D(p.x(), p.y(), std::atan2(d.y(), d.x()));
 }
 
 OdometrySimulator::OdometrySimulator(double speed_noise_std, double yaw_drift,

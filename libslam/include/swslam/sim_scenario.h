@@ -118,6 +118,9 @@ struct Scenario
  * malformed key or a value out of range. */
 Scenario loadScenario(const std::string& path);
 
+/** The scenario as .ini text that loadScenario() reads back (the name is not stored). */
+std::string formatScenario(const Scenario& s);
+
 /** Checks values (ranges, sensor geometry) without the world; throws naming the key. */
 void validateScenario(const Scenario& s);
 

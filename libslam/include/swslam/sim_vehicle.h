@@ -33,9 +33,19 @@ class VehiclePath
   const std::vector<Eigen::Vector2d>& samples() const { return pts_; }
 
  private:
+  /** Uniform Catmull-Rom segment: cubic c0 + c1 u + c2 u^2 + c3 u^3, u in [0, 1]. */
+  struct Segment
+  {
+    Eigen::Vector2d c0, c1, c2, c3;
+    Eigen::Vector2d at(double u) const { return c0 + u * (c1 + u * (c2 + u * c3)); }
+    Eigen::Vector2d d1(double u) const { return c1 + u * (2 * c2 + 3 * u * c3); }
+    Eigen::Vector2d d2(double u) const { return 2 * c2 + 6 * u * c3; }
+  };
   double speed_;
+  std::vector<Segment> segments_;
   std::vector<Eigen::Vector2d> pts_;  ///< positions of the dense samples
-  std::vector<double> heading_;       ///< heading at each sample (unwrapped)
+  std::vector<size_t> seg_;           ///< segment of each sample
+  std::vector<double> u_;             ///< spline parameter of each sample in its segment
   std::vector<double> s_;             ///< arc length at each sample
   double max_curvature_ = 0;
   Eigen::Vector2d max_curvature_point_ = Eigen::Vector2d::Zero();
