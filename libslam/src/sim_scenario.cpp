@@ -73,8 +73,15 @@ template <class Params>
 Params loadSection(const CConfigFileBase& cfg, const std::string& section)
 {
   if (!cfg.sectionExists(section)) throw std::invalid_argument("missing section [" + section + "]");
+  checkKnownKeys(cfg, section, Params());  // first: a misspelled key is named as such
   checkAllKeysPresent(cfg, section, Params());
   return loadStrict<Params>(cfg, section);
+}
+
+/** Full precision, so that formatScenario() round-trips. */
+void put(CConfigFileBase& c, const std::string& s, const std::string& key, double v)
+{
+  c.write(s, key, mrpt::format("%.15g", v));
 }
 
 void require(bool ok, const std::string& section, const std::string& key, const std::string& what)
@@ -93,9 +100,9 @@ void WorldParams::loadFromConfigFile(const CConfigFileBase& c, const std::string
 void WorldParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
   c.write(s, "seed", seed);
-  c.write(s, "size_x", size_x);
-  c.write(s, "size_y", size_y);
-  c.write(s, "grid_cell", grid_cell);
+  put(c, s, "size_x", size_x);
+  put(c, s, "size_y", size_y);
+  put(c, s, "grid_cell", grid_cell);
 }
 
 #define SWSLAM_DOUBLE_KEYS(X)                                                                    \
@@ -110,7 +117,7 @@ void TerrainParams::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 }
 void TerrainParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
-#define X(k) c.write(s, #k, k);
+#define X(k) put(c, s, #k, k);
   SWSLAM_DOUBLE_KEYS(X)
 #undef X
   c.write(s, "rocks", rocks);
@@ -130,7 +137,7 @@ void VegetationParams::loadFromConfigFile(const CConfigFileBase& c, const std::s
 }
 void VegetationParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
-#define X(k) c.write(s, #k, k);
+#define X(k) put(c, s, #k, k);
   SWSLAM_DOUBLE_KEYS(X)
 #undef X
   c.write(s, "bush_leaves", bush_leaves);
@@ -157,9 +164,9 @@ void VehicleParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) c
 {
   c.write(s, "waypoints", formatWaypoints(waypoints));
   c.write(s, "closed", closed);
-  c.write(s, "speed", speed);
-  c.write(s, "max_turn_rate_DEG", mrpt::RAD2DEG(max_turn_rate));
-  c.write(s, "start_time", mrpt::format("%.6f", start_time));
+  put(c, s, "speed", speed);
+  put(c, s, "max_turn_rate_DEG", mrpt::RAD2DEG(max_turn_rate));
+  put(c, s, "start_time", start_time);
 }
 
 size_t SensorParams::rays() const
@@ -185,17 +192,17 @@ void SensorParams::loadFromConfigFile(const CConfigFileBase& c, const std::strin
 void SensorParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
   c.write(s, "label", label);
-  c.write(s, "fov_DEG", mrpt::RAD2DEG(fov));
-  c.write(s, "resolution_DEG", mrpt::RAD2DEG(resolution));
-  c.write(s, "max_range", max_range);
-  c.write(s, "min_range", min_range);
-  c.write(s, "rate_hz", rate);
-  c.write(s, "range_noise_std", range_noise_std);
-  c.write(s, "dropout_prob", dropout_prob);
-  c.write(s, "pose_x", pose_x);
-  c.write(s, "pose_y", pose_y);
-  c.write(s, "pose_z", pose_z);
-  c.write(s, "pose_yaw_DEG", mrpt::RAD2DEG(pose_yaw));
+  put(c, s, "fov_DEG", mrpt::RAD2DEG(fov));
+  put(c, s, "resolution_DEG", mrpt::RAD2DEG(resolution));
+  put(c, s, "max_range", max_range);
+  put(c, s, "min_range", min_range);
+  put(c, s, "rate_hz", rate);
+  put(c, s, "range_noise_std", range_noise_std);
+  put(c, s, "dropout_prob", dropout_prob);
+  put(c, s, "pose_x", pose_x);
+  put(c, s, "pose_y", pose_y);
+  put(c, s, "pose_z", pose_z);
+  put(c, s, "pose_yaw_DEG", mrpt::RAD2DEG(pose_yaw));
 }
 
 void OdometryParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
@@ -208,9 +215,9 @@ void OdometryParams::loadFromConfigFile(const CConfigFileBase& c, const std::str
 void OdometryParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
   c.write(s, "enabled", enabled);
-  c.write(s, "speed_noise_std", speed_noise_std);
-  c.write(s, "yaw_drift_DEG_per_s", mrpt::RAD2DEG(yaw_drift));
-  c.write(s, "yaw_noise_std_DEG", mrpt::RAD2DEG(yaw_noise_std));
+  put(c, s, "speed_noise_std", speed_noise_std);
+  put(c, s, "yaw_drift_DEG_per_s", mrpt::RAD2DEG(yaw_drift));
+  put(c, s, "yaw_noise_std_DEG", mrpt::RAD2DEG(yaw_noise_std));
 }
 
 std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text)
@@ -235,7 +242,7 @@ std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text)
 std::string formatWaypoints(const std::vector<Eigen::Vector2d>& pts)
 {
   std::string s;
-  for (const auto& p : pts) s += (s.empty() ? "" : ", ") + mrpt::format("%g %g", p.x(), p.y());
+  for (const auto& p : pts) s += (s.empty() ? "" : ", ") + mrpt::format("%.15g %.15g", p.x(), p.y());
   return s;
 }
 
