@@ -84,66 +84,96 @@ void put(CConfigFileBase& c, const std::string& s, const std::string& key, doubl
   c.write(s, key, mrpt::format("%.15g", v));
 }
 
-void require(bool ok, const std::string& section, const std::string& key, const std::string& what)
+/** The plain-number keys of a parameter struct: key name and member. */
+template <class T>
+using NumberKeys = std::vector<std::pair<const char*, double T::*>>;
+
+template <class T>
+void loadNumbers(T& p, const NumberKeys<T>& keys, const CConfigFileBase& c, const std::string& s)
 {
-  if (!ok) throw std::invalid_argument(where(section, key) + " " + what);
+  for (const auto& [key, member] : keys) p.*member = readDouble(c, s, key);
 }
+
+template <class T>
+void saveNumbers(const T& p, const NumberKeys<T>& keys, CConfigFileBase& c, const std::string& s)
+{
+  for (const auto& [key, member] : keys) put(c, s, key, p.*member);
+}
+
+const NumberKeys<WorldParams> kWorldNumbers{
+    {"size_x", &WorldParams::size_x},
+    {"size_y", &WorldParams::size_y},
+    {"grid_cell", &WorldParams::grid_cell}};
+
+const NumberKeys<TerrainParams> kTerrainNumbers{
+    {"lake_center_x", &TerrainParams::lake_center_x},
+    {"lake_center_y", &TerrainParams::lake_center_y},
+    {"lake_radius", &TerrainParams::lake_radius},
+    {"lake_roughness", &TerrainParams::lake_roughness},
+    {"island_center_x", &TerrainParams::island_center_x},
+    {"island_center_y", &TerrainParams::island_center_y},
+    {"island_radius", &TerrainParams::island_radius},
+    {"island_roughness", &TerrainParams::island_roughness},
+    {"rock_radius_min", &TerrainParams::rock_radius_min},
+    {"rock_radius_max", &TerrainParams::rock_radius_max}};
+
+const NumberKeys<VegetationParams> kVegetationNumbers{
+    {"land_band", &VegetationParams::land_band},
+    {"trunk_density", &VegetationParams::trunk_density},
+    {"trunk_radius_min", &VegetationParams::trunk_radius_min},
+    {"trunk_radius_max", &VegetationParams::trunk_radius_max},
+    {"bush_density", &VegetationParams::bush_density},
+    {"bush_radius", &VegetationParams::bush_radius},
+    {"bush_pass_through", &VegetationParams::bush_pass_through},
+    {"reed_density", &VegetationParams::reed_density},
+    {"reed_pass_through", &VegetationParams::reed_pass_through},
+    {"path_clearance", &VegetationParams::path_clearance}};
+
+const NumberKeys<SensorParams> kSensorNumbers{
+    {"max_range", &SensorParams::max_range},
+    {"min_range", &SensorParams::min_range},
+    {"rate_hz", &SensorParams::rate},
+    {"range_noise_std", &SensorParams::range_noise_std},
+    {"dropout_prob", &SensorParams::dropout_prob},
+    {"pose_x", &SensorParams::pose_x},
+    {"pose_y", &SensorParams::pose_y},
+    {"pose_z", &SensorParams::pose_z}};
 }  // namespace
 
 void WorldParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
 {
   seed = readUnsigned(c, s, "seed");
-  size_x = readDouble(c, s, "size_x");
-  size_y = readDouble(c, s, "size_y");
-  grid_cell = readDouble(c, s, "grid_cell");
+  loadNumbers(*this, kWorldNumbers, c, s);
 }
 void WorldParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
   c.write(s, "seed", seed);
-  put(c, s, "size_x", size_x);
-  put(c, s, "size_y", size_y);
-  put(c, s, "grid_cell", grid_cell);
+  saveNumbers(*this, kWorldNumbers, c, s);
 }
 
-#define SWSLAM_DOUBLE_KEYS(X)                                                                    \
-  X(lake_center_x) X(lake_center_y) X(lake_radius) X(lake_roughness) X(island_center_x)         \
-  X(island_center_y) X(island_radius) X(island_roughness) X(rock_radius_min) X(rock_radius_max)
 void TerrainParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
 {
-#define X(k) k = readDouble(c, s, #k);
-  SWSLAM_DOUBLE_KEYS(X)
-#undef X
+  loadNumbers(*this, kTerrainNumbers, c, s);
   rocks = readUnsigned(c, s, "rocks");
 }
 void TerrainParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
-#define X(k) put(c, s, #k, k);
-  SWSLAM_DOUBLE_KEYS(X)
-#undef X
+  saveNumbers(*this, kTerrainNumbers, c, s);
   c.write(s, "rocks", rocks);
 }
-#undef SWSLAM_DOUBLE_KEYS
 
-#define SWSLAM_DOUBLE_KEYS(X)                                                                    \
-  X(land_band) X(trunk_density) X(trunk_radius_min) X(trunk_radius_max) X(bush_density)         \
-  X(bush_radius) X(bush_pass_through) X(reed_density) X(reed_pass_through) X(path_clearance)
 void VegetationParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
 {
-#define X(k) k = readDouble(c, s, #k);
-  SWSLAM_DOUBLE_KEYS(X)
-#undef X
+  loadNumbers(*this, kVegetationNumbers, c, s);
   bush_leaves = readUnsigned(c, s, "bush_leaves");
   reed_stems = readUnsigned(c, s, "reed_stems");
 }
 void VegetationParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
-#define X(k) put(c, s, #k, k);
-  SWSLAM_DOUBLE_KEYS(X)
-#undef X
+  saveNumbers(*this, kVegetationNumbers, c, s);
   c.write(s, "bush_leaves", bush_leaves);
   c.write(s, "reed_stems", reed_stems);
 }
-#undef SWSLAM_DOUBLE_KEYS
 
 void VehicleParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
 {
@@ -179,30 +209,16 @@ void SensorParams::loadFromConfigFile(const CConfigFileBase& c, const std::strin
   label = mrpt::system::trim(c.read_string(s, "label", "", true));
   fov = readDegrees(c, s, "fov_DEG");
   resolution = readDegrees(c, s, "resolution_DEG");
-  max_range = readDouble(c, s, "max_range");
-  min_range = readDouble(c, s, "min_range");
-  rate = readDouble(c, s, "rate_hz");
-  range_noise_std = readDouble(c, s, "range_noise_std");
-  dropout_prob = readDouble(c, s, "dropout_prob");
-  pose_x = readDouble(c, s, "pose_x");
-  pose_y = readDouble(c, s, "pose_y");
-  pose_z = readDouble(c, s, "pose_z");
   pose_yaw = readDegrees(c, s, "pose_yaw_DEG");
+  loadNumbers(*this, kSensorNumbers, c, s);
 }
 void SensorParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
   c.write(s, "label", label);
   put(c, s, "fov_DEG", mrpt::RAD2DEG(fov));
   put(c, s, "resolution_DEG", mrpt::RAD2DEG(resolution));
-  put(c, s, "max_range", max_range);
-  put(c, s, "min_range", min_range);
-  put(c, s, "rate_hz", rate);
-  put(c, s, "range_noise_std", range_noise_std);
-  put(c, s, "dropout_prob", dropout_prob);
-  put(c, s, "pose_x", pose_x);
-  put(c, s, "pose_y", pose_y);
-  put(c, s, "pose_z", pose_z);
   put(c, s, "pose_yaw_DEG", mrpt::RAD2DEG(pose_yaw));
+  saveNumbers(*this, kSensorNumbers, c, s);
 }
 
 void OdometryParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
@@ -244,71 +260,6 @@ std::string formatWaypoints(const std::vector<Eigen::Vector2d>& pts)
   std::string s;
   for (const auto& p : pts) s += (s.empty() ? "" : ", ") + mrpt::format("%.15g %.15g", p.x(), p.y());
   return s;
-}
-
-void validateScenario(const Scenario& sc)
-{
-  const auto& w = sc.world;
-  require(w.size_x > 0, "world", "size_x", "must be > 0");
-  require(w.size_y > 0, "world", "size_y", "must be > 0");
-  require(w.grid_cell >= 0.1 && w.grid_cell <= 50, "world", "grid_cell", "must be in [0.1, 50] m");
-
-  const auto& t = sc.terrain;
-  require(t.lake_radius >= 0, "terrain", "lake_radius", "must be >= 0 (0: no water)");
-  require(t.lake_roughness >= 0 && t.lake_roughness <= 0.3 * t.lake_radius + 1e-9, "terrain",
-          "lake_roughness", "must be in [0, 0.3 * lake_radius]");
-  require(t.island_radius >= 0, "terrain", "island_radius", "must be >= 0 (0: no island)");
-  require(t.island_roughness >= 0 && t.island_roughness <= 0.3 * t.island_radius + 1e-9,
-          "terrain", "island_roughness", "must be in [0, 0.3 * island_radius]");
-  require(t.rock_radius_min > 0, "terrain", "rock_radius_min", "must be > 0");
-  require(t.rock_radius_max >= t.rock_radius_min, "terrain", "rock_radius_max",
-          "must be >= rock_radius_min");
-
-  const auto& g = sc.vegetation;
-  require(g.land_band >= 0, "vegetation", "land_band", "must be >= 0");
-  require(g.trunk_density >= 0 && g.trunk_density <= 100, "vegetation", "trunk_density",
-          "must be in [0, 100] per 100 m^2");
-  require(g.trunk_radius_min > 0, "vegetation", "trunk_radius_min", "must be > 0");
-  require(g.trunk_radius_max >= g.trunk_radius_min, "vegetation", "trunk_radius_max",
-          "must be >= trunk_radius_min");
-  require(g.bush_density >= 0 && g.bush_density <= 100, "vegetation", "bush_density",
-          "must be in [0, 100] per 100 m^2");
-  require(g.bush_radius > 0, "vegetation", "bush_radius", "must be > 0");
-  require(g.reed_density >= 0 && g.reed_density <= 1000, "vegetation", "reed_density",
-          "must be in [0, 1000] per 100 m");
-  require(g.bush_pass_through >= 0 && g.bush_pass_through < 1, "vegetation",
-          "bush_pass_through", "must be a probability in [0, 1)");
-  require(g.reed_pass_through >= 0 && g.reed_pass_through < 1, "vegetation",
-          "reed_pass_through", "must be a probability in [0, 1)");
-  require(g.path_clearance >= 0, "vegetation", "path_clearance", "must be >= 0");
-
-  const auto& v = sc.vehicle;
-  require(v.speed > 0 && v.speed <= 5, "vehicle", "speed", "must be in (0, 5] m/s");
-  require(v.max_turn_rate > 0, "vehicle", "max_turn_rate_DEG", "must be > 0");
-  require(v.start_time >= 0, "vehicle", "start_time", "must be >= 0");
-
-  const auto& s = sc.sensor;
-  require(!s.label.empty() && s.label.find_first_of(" \t") == std::string::npos, "sensor",
-          "label", "must be one word");
-  require(s.fov > 0 && s.fov <= 2 * M_PI + 1e-9, "sensor", "fov_DEG", "must be in (0, 360]");
-  require(s.resolution > 0 && s.resolution <= s.fov, "sensor", "resolution_DEG",
-          "must be in (0, fov_DEG]");
-  const double steps = s.fov / s.resolution;
-  require(std::abs(steps - std::round(steps)) < 1e-6, "sensor", "resolution_DEG",
-          mrpt::format("= %g does not divide fov_DEG = %g", mrpt::RAD2DEG(s.resolution),
-                       mrpt::RAD2DEG(s.fov)));
-  require(s.min_range >= 0, "sensor", "min_range", "must be >= 0");
-  require(s.max_range > s.min_range, "sensor", "max_range",
-          mrpt::format("= %g must be > min_range = %g", s.max_range, s.min_range));
-  require(s.rate > 0 && s.rate <= 1000, "sensor", "rate_hz", "must be in (0, 1000]");
-  require(s.range_noise_std >= 0, "sensor", "range_noise_std", "must be >= 0");
-  require(s.dropout_prob >= 0 && s.dropout_prob < 1, "sensor", "dropout_prob",
-          "must be a probability in [0, 1)");
-
-  const auto& o = sc.odometry;
-  require(o.speed_noise_std >= 0 && o.speed_noise_std < 1, "odometry", "speed_noise_std",
-          "must be in [0, 1)");
-  require(o.yaw_noise_std >= 0, "odometry", "yaw_noise_std_DEG", "must be >= 0");
 }
 
 std::string formatScenario(const Scenario& sc)
