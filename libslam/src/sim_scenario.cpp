@@ -120,6 +120,7 @@ const NumberKeys<TerrainParams> kTerrainNumbers{
 const NumberKeys<VegetationParams> kVegetationNumbers{
     {"land_band", &VegetationParams::land_band},
     {"trunk_density", &VegetationParams::trunk_density},
+    {"density_variation", &VegetationParams::density_variation},
     {"trunk_radius_min", &VegetationParams::trunk_radius_min},
     {"trunk_radius_max", &VegetationParams::trunk_radius_max},
     {"bush_density", &VegetationParams::bush_density},

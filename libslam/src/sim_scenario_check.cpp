@@ -39,6 +39,8 @@ void validateScenario(const Scenario& sc)
   require(g.land_band >= 0, "vegetation", "land_band", "must be >= 0");
   require(g.trunk_density >= 0 && g.trunk_density <= 100, "vegetation", "trunk_density",
           "must be in [0, 100] per 100 m^2");
+  require(g.density_variation >= 0 && g.density_variation <= 1, "vegetation",
+          "density_variation", "must be in [0, 1]");
   require(g.trunk_radius_min > 0, "vegetation", "trunk_radius_min", "must be > 0");
   require(g.trunk_radius_max >= g.trunk_radius_min, "vegetation", "trunk_radius_max",
           "must be >= trunk_radius_min");

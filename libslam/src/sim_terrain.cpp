@@ -3,6 +3,7 @@
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -41,6 +42,11 @@ class Generator
       for (const auto& island : world_.islands) shore_length_ += addShore(island);
     }
     addRocks();
+    for (int i = 0; i < 4; i++)
+    {
+      const double k = 2 * M_PI / uniform(20, 60), a = uniform(-M_PI, M_PI);
+      waves_.emplace_back(k * std::cos(a), k * std::sin(a), uniform(-M_PI, M_PI));
+    }
     addTrunksAndBushes();
     addReeds();
     return std::move(world_);
@@ -51,6 +57,7 @@ class Generator
   std::mt19937_64 rng_;
   World world_;
   double shore_length_ = 0;
+  std::vector<Eigen::Vector3d> waves_;  ///< (kx, ky, phase) of the density field
   // Raster of the cells near the path, where nothing may be placed.
   double clear_cell_ = 0.5;
   size_t clear_nx_ = 0, clear_ny_ = 0;
@@ -166,17 +173,28 @@ class Generator
     return false;
   }
 
-  /** `density` per 100 m^2 of the part of the world where `accept` holds. */
+  /** Relative vegetation density at `p`, in [0, 2] with mean about 1: a few random
+   * plane waves of 20-60 m wavelength make thickets and clearings. */
+  double densityField(const Vec& p) const
+  {
+    double sum = 0;
+    for (const auto& w : waves_) sum += std::cos(w.x() * p.x() + w.y() * p.y() + w.z());
+    return std::clamp(1.0 + sc_.vegetation.density_variation * 0.5 * sum, 0.0, 2.0);
+  }
+
+  /** Mean `density` per 100 m^2 of the part of the world where `accept` holds,
+   * modulated by densityField (rejection sampling from twice the mean). */
   template <class Accept, class Place>
   void scatter(double density, Accept accept, Place place)
   {
     const Box& b = world_.bounds;
     const double area = (b.max_x - b.min_x) * (b.max_y - b.min_y);
-    const long n = std::lround(density * area / 100.0);
+    const long n = std::lround(2 * density * area / 100.0);
     for (long i = 0; i < n; i++)
     {
       const Vec p = uniformInWorld();
-      if (accept(p)) place(p);
+      const bool keep = uniform(0, 2) < densityField(p);
+      if (keep && accept(p)) place(p);
     }
   }
 

@@ -43,7 +43,8 @@ struct TerrainParams : public mrpt::config::CLoadableOptions
 struct VegetationParams : public mrpt::config::CLoadableOptions
 {
   double land_band = 20;          ///< vegetated land beyond the shore [m]
-  double trunk_density = 2;       ///< trunks per 100 m^2 of vegetated land
+  double trunk_density = 2;       ///< mean trunks per 100 m^2 of vegetated land
+  double density_variation = 0.5; ///< 0: uniform; 1: from clearings to twice the mean
   double trunk_radius_min = 0.1, trunk_radius_max = 0.4;
   double bush_density = 1;        ///< bushes per 100 m^2 of vegetated land
   double bush_radius = 1.0;       ///< radius of a bush [m]
