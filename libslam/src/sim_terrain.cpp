@@ -271,14 +271,18 @@ void checkPathFits(const Scenario& sc, const World& world, const VehiclePath& pa
         mrpt::RAD2DEG(turn), p.x(), p.y(), mrpt::RAD2DEG(sc.vehicle.max_turn_rate),
         sc.vehicle.speed));
   }
+  // The sensor, mounted off the vehicle's origin, must stay inside the world too.
+  const double m = std::hypot(sc.sensor.pose_x, sc.sensor.pose_y);
+  const Box& b = world.bounds;
+  const Box inner{b.min_x + m, b.min_y + m, b.max_x - m, b.max_y - m};
   for (const Vec& p : path.samples())
   {
-    if (!world.bounds.contains(p))
+    if (!inner.contains(p))
       throw std::invalid_argument(mrpt::format(
           "[vehicle] waypoints: the path leaves the world at (%.1f, %.1f); the world spans "
-          "[%.1f, %.1f] x [%.1f, %.1f] ([world] size_x, size_y)",
-          p.x(), p.y(), world.bounds.min_x, world.bounds.max_x, world.bounds.min_y,
-          world.bounds.max_y));
+          "[%.1f, %.1f] x [%.1f, %.1f] ([world] size_x, size_y), less %.1f m for the sensor "
+          "mounting",
+          p.x(), p.y(), b.min_x, b.max_x, b.min_y, b.max_y, m));
     if (!world.has_water) continue;
     bool afloat = world.lake.radialOffset(p) < -kWaterMargin;
     for (const auto& island : world.islands) afloat = afloat && island.radialOffset(p) > kWaterMargin;
