@@ -66,16 +66,14 @@ std::string sensorMismatch(const Scan& a, const Scan& b)
          describe(b);
 }
 
-/** Correspondences within `radius`, then outlier rejection (doubles only at the final
+/** Outlier rejection of the correspondences found within `radius` (doubles only at the final
  * radius: while the scans are still far apart many points share a nearest neighbour, and
  * thinning them then shrinks the basin of convergence). */
-std::vector<Correspondence> selectCorrespondences(const ReferenceScan& reference,
-                                                  const std::vector<Eigen::Vector2d>& cur_in_ref,
-                                                  double radius, const PlicpParams& params)
+std::vector<Correspondence> rejectOutliers(const Scan& ref,
+                                           const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                           std::vector<Correspondence> found, double radius,
+                                           const PlicpParams& params)
 {
-  const Scan& ref = reference.scan;
-  auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref, radius,
-                                          params.min_segment_length);
   if (params.remove_doubles && radius <= params.max_correspondence_dist)
     found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
   return plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
@@ -110,6 +108,9 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   res.pose = initial_guess;
   if (const auto why = sensorMismatch(ref, cur); !why.empty())
     return fail(res, MatchStatus::InvalidInput, why);
+  if (reference.index.min_segment != params.min_segment_length)
+    return fail(res, MatchStatus::InvalidInput,
+                "reference scan was indexed with another min_segment_length");
   const size_t min_n = static_cast<size_t>(params.min_correspondences);
   if (ref.size() < min_n || cur.size() < min_n)
     return fail(res, MatchStatus::TooFewCorrespondences,
@@ -121,13 +122,17 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   const double fine = params.max_correspondence_dist;
   // Coarse to fine: when the guess matches few points within the final radius, a wide radius
   // first widens the basin of convergence; it halves each time the estimate settles.
+  auto search = [&](const std::vector<Eigen::Vector2d>& pts, double radius) {
+    return plicp::findCorrespondences(ref, reference.index, pts, radius);
+  };
   double radius = fine;
-  if (params.initial_correspondence_dist > fine)
+  auto cur_in_ref = transformed(cur, x);
+  auto found = search(cur_in_ref, fine);  // also the first iteration's set if no coarse start
+  if (params.initial_correspondence_dist > fine &&
+      found.size() < params.coarse_start_fraction * cur.size())
   {
-    const auto probe = plicp::findCorrespondences(ref, reference.index, transformed(cur, x), fine,
-                                                  params.min_segment_length);
-    if (probe.size() < params.coarse_start_fraction * cur.size())
-      radius = params.initial_correspondence_dist;
+    radius = params.initial_correspondence_dist;
+    found = search(cur_in_ref, radius);
   }
   std::vector<Correspondence> kept, previous, before_previous;
   auto settled = [&]() {
@@ -141,7 +146,12 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   for (int it = 1; it <= params.max_iterations; it++)
   {
     res.iterations = it;
-    kept = selectCorrespondences(reference, transformed(cur, x), radius, params);
+    if (it > 1)
+    {
+      cur_in_ref = transformed(cur, x);
+      found = search(cur_in_ref, radius);
+    }
+    kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
     if (kept.size() < min_n)
       return fail(res, MatchStatus::TooFewCorrespondences,
                   std::to_string(kept.size()) + " valid correspondences at iteration " +
@@ -175,7 +185,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
     return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
 
   // Residuals and covariance (eq. 4-10) at the final estimate.
-  const auto cur_in_ref = transformed(cur, x);
+  cur_in_ref = transformed(cur, x);
   const auto errors = lineErrors(ref, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
@@ -184,7 +194,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   cov_terms.reserve(kept.size());
   for (const auto& k : kept)
   {
-    auto dir = [](const Scan& s, int j) { return Eigen::Vector2d(std::cos(s.angles[j]), std::sin(s.angles[j])); };
+    auto dir = [](const Scan& s, int j) { return Eigen::Vector2d(s.points[j] / s.ranges[j]); };
     cov_terms.push_back({dir(cur, k.i), dir(ref, k.j1), dir(ref, k.j2), cur.ranges[k.i],
                          ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
   }
