@@ -98,6 +98,94 @@ MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
 }
 }  // namespace
 
+/** The state of one run of PLICP iterations. */
+struct IcpRun
+{
+  Eigen::Vector3d x;
+  std::vector<Correspondence> kept;
+  int iterations = 0;
+  MatchStatus status = MatchStatus::MaxIterations;
+  std::string message;
+};
+
+/** Iterates from run.x with matching radius `radius`, halving it each time the estimate
+ * settles, until it settles at max_correspondence_dist (Converged) or max_iterations. Fails
+ * with TooFewCorrespondences or Diverged (run.message says why). `first`, if not empty, is
+ * the correspondence set at run.x and `radius`, already searched. */
+void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
+             const PlicpParams& params, IcpRun& run, std::vector<Correspondence> first)
+{
+  const Scan& ref = reference.scan;
+  const size_t min_n = static_cast<size_t>(params.min_correspondences);
+  std::vector<Correspondence> previous, before_previous;
+  auto settled = [&]() {
+    if (radius <= params.max_correspondence_dist) return true;
+    radius = std::max(params.max_correspondence_dist, 0.5 * radius);
+    previous.clear();
+    before_previous.clear();
+    return false;
+  };
+  while (run.iterations < params.max_iterations)
+  {
+    run.iterations++;
+    const auto cur_in_ref = transformed(cur, run.x);
+    auto found = run.iterations == 1 && !first.empty()
+                     ? std::move(first)
+                     : plicp::findCorrespondences(ref, reference.index, cur_in_ref, radius);
+    run.kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
+    if (run.kept.size() < min_n)
+    {
+      run.status = MatchStatus::TooFewCorrespondences;
+      run.message = std::to_string(run.kept.size()) + " valid correspondences at iteration " +
+                    std::to_string(run.iterations) + " (need " + std::to_string(min_n) + ")";
+      return;
+    }
+    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
+    if ((run.kept == previous || run.kept == before_previous) && settled())
+    {
+      run.status = MatchStatus::Converged;
+      return;
+    }
+    std::vector<plicp::PointToLine> terms;
+    terms.reserve(run.kept.size());
+    for (const auto& k : run.kept)
+      terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
+    const auto next = plicp::solvePointToLine(terms, run.x);
+    if (!next || !next->allFinite())
+    {
+      run.status = MatchStatus::Diverged;
+      run.message = "closed-form step failed at iteration " + std::to_string(run.iterations);
+      return;
+    }
+    const Eigen::Vector3d step(next->x() - run.x.x(), next->y() - run.x.y(),
+                               std::remainder(next->z() - run.x.z(), 2 * M_PI));
+    run.x = *next;
+    before_previous = std::move(previous);
+    previous = run.kept;
+    if (isSmallStep(step, radius, params) && settled())
+    {
+      run.status = MatchStatus::Converged;
+      return;
+    }
+  }
+  run.status = MatchStatus::MaxIterations;
+}
+
+/** Coarse to fine: when the guess matches few points within the final radius, a wide radius
+ * first widens the basin of convergence (it halves each time the estimate settles). Returns
+ * the start radius; `probe` gets the correspondences at the final radius if they were searched
+ * and the start is fine. */
+double startRadius(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x,
+                   const PlicpParams& params, std::vector<Correspondence>& probe)
+{
+  const double fine = params.max_correspondence_dist;
+  if (params.initial_correspondence_dist <= fine) return fine;
+  probe = plicp::findCorrespondences(reference.scan, reference.index, transformed(cur, x), fine);
+  if (probe.size() >= params.coarse_start_fraction * cur.size()) return fine;
+  probe.clear();
+  return params.initial_correspondence_dist;
+}
+
 MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                        const mrpt::poses::CPose2D& initial_guess, const PlicpParams& params)
 {
@@ -118,74 +206,23 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                     std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
-  Eigen::Vector3d x = x0;
-  const double fine = params.max_correspondence_dist;
-  // Coarse to fine: when the guess matches few points within the final radius, a wide radius
-  // first widens the basin of convergence; it halves each time the estimate settles.
-  auto search = [&](const std::vector<Eigen::Vector2d>& pts, double radius) {
-    return plicp::findCorrespondences(ref, reference.index, pts, radius);
-  };
-  double radius = fine;
-  auto cur_in_ref = transformed(cur, x);
-  auto found = search(cur_in_ref, fine);  // also the first iteration's set if no coarse start
-  if (params.initial_correspondence_dist > fine &&
-      found.size() < params.coarse_start_fraction * cur.size())
-  {
-    radius = params.initial_correspondence_dist;
-    found = search(cur_in_ref, radius);
-  }
-  std::vector<Correspondence> kept, previous, before_previous;
-  auto settled = [&]() {
-    if (radius <= fine) return true;
-    radius = std::max(fine, 0.5 * radius);
-    previous.clear();
-    before_previous.clear();
-    return false;
-  };
-  res.status = MatchStatus::MaxIterations;
-  for (int it = 1; it <= params.max_iterations; it++)
-  {
-    res.iterations = it;
-    if (it > 1)
-    {
-      cur_in_ref = transformed(cur, x);
-      found = search(cur_in_ref, radius);
-    }
-    kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
-    if (kept.size() < min_n)
-      return fail(res, MatchStatus::TooFewCorrespondences,
-                  std::to_string(kept.size()) + " valid correspondences at iteration " +
-                      std::to_string(it) + " (need " + std::to_string(min_n) + ")");
-    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
-    if ((kept == previous || kept == before_previous) && settled())
-    {
-      res.status = MatchStatus::Converged;
-      break;
-    }
-    std::vector<plicp::PointToLine> terms;
-    terms.reserve(kept.size());
-    for (const auto& k : kept) terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
-    const auto next = plicp::solvePointToLine(terms, x);
-    if (!next || !next->allFinite())
-      return fail(res, MatchStatus::Diverged, "closed-form step failed at iteration " + std::to_string(it));
-    const Eigen::Vector3d step(next->x() - x.x(), next->y() - x.y(),
-                               std::remainder(next->z() - x.z(), 2 * M_PI));
-    x = *next;
-    before_previous = std::move(previous);
-    previous = kept;
-    if (isSmallStep(step, radius, params) && settled())
-    {
-      res.status = MatchStatus::Converged;
-      break;
-    }
-  }
+  IcpRun run;
+  run.x = x0;
+  std::vector<Correspondence> probe;
+  const double radius = startRadius(reference, cur, x0, params, probe);
+  iterate(reference, cur, radius, params, run, std::move(probe));
+  res.iterations = run.iterations;
+  res.status = run.status;
+  if (!res.ok()) return fail(res, run.status, run.message);
+  const Eigen::Vector3d& x = run.x;
+  const auto& kept = run.kept;
   res.pose = mrpt::poses::CPose2D(x.x(), x.y(), x.z());
   if ((x.head<2>() - x0.head<2>()).norm() > params.max_correction_xy ||
       std::abs(std::remainder(x.z() - x0.z(), 2 * M_PI)) > params.max_correction_theta)
     return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
 
   // Residuals and covariance (eq. 4-10) at the final estimate.
-  cur_in_ref = transformed(cur, x);
+  const auto cur_in_ref = transformed(cur, x);
   const auto errors = lineErrors(ref, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
