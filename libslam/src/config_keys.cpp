@@ -37,6 +37,13 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
     if (!ok)
       throw std::invalid_argument("config: unknown key '" + key + "' in section [" + section +
                                   "]; known keys: " + joined(known));
+    // MRPT's reader keeps the rest of the line in the value: "true  # note" would read as
+    // false, silently. Comments go on lines of their own.
+    const std::string value = cfg.read_string(section, padded_key, "");
+    if (value.find(" #") != std::string::npos || value.find("\t#") != std::string::npos ||
+        value.find(" ;") != std::string::npos)
+      throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value +
+                                  "': comments must be on a line of their own");
   }
 }
 

@@ -43,7 +43,7 @@ MatcherFn plicpMatcher(const PlicpParams& params)
                   const CPose2D& guess) {
     // PLICP works in the sensor frame: convert the vehicle-frame guess and result.
     const CPose2D s(a.sensorPose);
-    const ReferenceScan ref(scanFromObservation(a));
+    const ReferenceScan ref(scanFromObservation(a), params);
     const MatchResult r = matchScans(ref, scanFromObservation(b), -s + guess + s, params);
     return Estimate{s + r.pose - s, r.iterations, r.ok()};
   };

@@ -66,6 +66,30 @@ std::string sensorMismatch(const Scan& a, const Scan& b)
          describe(b);
 }
 
+/** Outlier rejection of the correspondences found within `radius` (doubles only at the final
+ * radius: while the scans are still far apart many points share a nearest neighbour, and
+ * thinning them then shrinks the basin of convergence). */
+std::vector<Correspondence> rejectOutliers(const Scan& ref,
+                                           const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                           std::vector<Correspondence> found, double radius,
+                                           const PlicpParams& params)
+{
+  if (params.remove_doubles && radius <= params.max_correspondence_dist)
+    found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
+  return plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
+                            params.adaptive_quantile, params.adaptive_mult);
+}
+
+/** Convergence test of a step: the epsilons at the final radius; at a coarse radius only
+ * settling is needed (2% of the radius, 0.3 deg), the fine stages refine it. */
+bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& params)
+{
+  const bool coarse = radius > params.max_correspondence_dist;
+  const double eps_xy = coarse ? 0.02 * radius : params.epsilon_xy;
+  const double eps_th = coarse ? 0.005 : params.epsilon_theta;
+  return step.head<2>().norm() < eps_xy && std::abs(step.z()) < eps_th;
+}
+
 MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
 {
   r.status = s;
@@ -73,6 +97,94 @@ MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
   return r;
 }
 }  // namespace
+
+/** The state of one run of PLICP iterations. */
+struct IcpRun
+{
+  Eigen::Vector3d x;
+  std::vector<Correspondence> kept;
+  int iterations = 0;
+  MatchStatus status = MatchStatus::MaxIterations;
+  std::string message;
+};
+
+/** Iterates from run.x with matching radius `radius`, halving it each time the estimate
+ * settles, until it settles at max_correspondence_dist (Converged) or max_iterations. Fails
+ * with TooFewCorrespondences or Diverged (run.message says why). `first`, if not empty, is
+ * the correspondence set at run.x and `radius`, already searched. */
+void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
+             const PlicpParams& params, IcpRun& run, std::vector<Correspondence> first)
+{
+  const Scan& ref = reference.scan;
+  const size_t min_n = static_cast<size_t>(params.min_correspondences);
+  std::vector<Correspondence> previous, before_previous;
+  auto settled = [&]() {
+    if (radius <= params.max_correspondence_dist) return true;
+    radius = std::max(params.max_correspondence_dist, 0.5 * radius);
+    previous.clear();
+    before_previous.clear();
+    return false;
+  };
+  while (run.iterations < params.max_iterations)
+  {
+    run.iterations++;
+    const auto cur_in_ref = transformed(cur, run.x);
+    auto found = run.iterations == 1 && !first.empty()
+                     ? std::move(first)
+                     : plicp::findCorrespondences(ref, reference.index, cur_in_ref, radius);
+    run.kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
+    if (run.kept.size() < min_n)
+    {
+      run.status = MatchStatus::TooFewCorrespondences;
+      run.message = std::to_string(run.kept.size()) + " valid correspondences at iteration " +
+                    std::to_string(run.iterations) + " (need " + std::to_string(min_n) + ")";
+      return;
+    }
+    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
+    if ((run.kept == previous || run.kept == before_previous) && settled())
+    {
+      run.status = MatchStatus::Converged;
+      return;
+    }
+    std::vector<plicp::PointToLine> terms;
+    terms.reserve(run.kept.size());
+    for (const auto& k : run.kept)
+      terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
+    const auto next = plicp::solvePointToLine(terms, run.x);
+    if (!next || !next->allFinite())
+    {
+      run.status = MatchStatus::Diverged;
+      run.message = "closed-form step failed at iteration " + std::to_string(run.iterations);
+      return;
+    }
+    const Eigen::Vector3d step(next->x() - run.x.x(), next->y() - run.x.y(),
+                               std::remainder(next->z() - run.x.z(), 2 * M_PI));
+    run.x = *next;
+    before_previous = std::move(previous);
+    previous = run.kept;
+    if (isSmallStep(step, radius, params) && settled())
+    {
+      run.status = MatchStatus::Converged;
+      return;
+    }
+  }
+  run.status = MatchStatus::MaxIterations;
+}
+
+/** Coarse to fine: when the guess matches few points within the final radius, a wide radius
+ * first widens the basin of convergence (it halves each time the estimate settles). Returns
+ * the start radius; `probe` gets the correspondences at the final radius if they were searched
+ * and the start is fine. */
+double startRadius(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x,
+                   const PlicpParams& params, std::vector<Correspondence>& probe)
+{
+  const double fine = params.max_correspondence_dist;
+  if (params.initial_correspondence_dist <= fine) return fine;
+  probe = plicp::findCorrespondences(reference.scan, reference.index, transformed(cur, x), fine);
+  if (probe.size() >= params.coarse_start_fraction * cur.size()) return fine;
+  probe.clear();
+  return params.initial_correspondence_dist;
+}
 
 MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                        const mrpt::poses::CPose2D& initial_guess, const PlicpParams& params)
@@ -84,6 +196,9 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   res.pose = initial_guess;
   if (const auto why = sensorMismatch(ref, cur); !why.empty())
     return fail(res, MatchStatus::InvalidInput, why);
+  if (reference.index.min_segment != params.min_segment_length)
+    return fail(res, MatchStatus::InvalidInput,
+                "reference scan was indexed with another min_segment_length");
   const size_t min_n = static_cast<size_t>(params.min_correspondences);
   if (ref.size() < min_n || cur.size() < min_n)
     return fail(res, MatchStatus::TooFewCorrespondences,
@@ -91,59 +206,16 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                     std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
-  Eigen::Vector3d x = x0;
-  std::vector<Correspondence> kept, previous, before_previous;
-  // Coarse to fine: a wide matching radius first widens the basin of convergence, then it
-  // shrinks to max_correspondence_dist each time the estimate settles.
-  double max_dist = std::max(params.initial_correspondence_dist, params.max_correspondence_dist);
-  auto settled = [&]() {
-    if (max_dist <= params.max_correspondence_dist) return true;
-    max_dist = std::max(params.max_correspondence_dist, 0.5 * max_dist);
-    previous.clear();
-    before_previous.clear();
-    return false;
-  };
-  res.status = MatchStatus::MaxIterations;
-  for (int it = 1; it <= params.max_iterations; it++)
-  {
-    res.iterations = it;
-    const auto cur_in_ref = transformed(cur, x);
-    auto found = plicp::findCorrespondences(ref, reference.index, cur_in_ref, max_dist,
-                                            params.min_segment_length);
-    // One match per reference point, once the radius is final: while the scans are still far
-    // apart many points share a nearest neighbour, and thinning them then shrinks the basin.
-    if (params.remove_doubles && max_dist <= params.max_correspondence_dist)
-      found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
-    kept = plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
-                              params.adaptive_quantile, params.adaptive_mult);
-    if (kept.size() < min_n)
-      return fail(res, MatchStatus::TooFewCorrespondences,
-                  std::to_string(kept.size()) + " valid correspondences at iteration " +
-                      std::to_string(it) + " (need " + std::to_string(min_n) + ")");
-    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
-    if ((kept == previous || kept == before_previous) && settled())
-    {
-      res.status = MatchStatus::Converged;
-      break;
-    }
-    std::vector<plicp::PointToLine> terms;
-    terms.reserve(kept.size());
-    for (const auto& k : kept) terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
-    const auto next = plicp::solvePointToLine(terms, x);
-    if (!next || !next->allFinite())
-      return fail(res, MatchStatus::Diverged, "closed-form step failed at iteration " + std::to_string(it));
-    const Eigen::Vector3d step(next->x() - x.x(), next->y() - x.y(),
-                               std::remainder(next->z() - x.z(), 2 * M_PI));
-    x = *next;
-    before_previous = std::move(previous);
-    previous = kept;
-    if (step.head<2>().norm() < params.epsilon_xy && std::abs(step.z()) < params.epsilon_theta &&
-        settled())
-    {
-      res.status = MatchStatus::Converged;
-      break;
-    }
-  }
+  IcpRun run;
+  run.x = x0;
+  std::vector<Correspondence> probe;
+  const double radius = startRadius(reference, cur, x0, params, probe);
+  iterate(reference, cur, radius, params, run, std::move(probe));
+  res.iterations = run.iterations;
+  res.status = run.status;
+  if (!res.ok()) return fail(res, run.status, run.message);
+  const Eigen::Vector3d& x = run.x;
+  const auto& kept = run.kept;
   res.pose = mrpt::poses::CPose2D(x.x(), x.y(), x.z());
   if ((x.head<2>() - x0.head<2>()).norm() > params.max_correction_xy ||
       std::abs(std::remainder(x.z() - x0.z(), 2 * M_PI)) > params.max_correction_theta)
@@ -159,7 +231,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   cov_terms.reserve(kept.size());
   for (const auto& k : kept)
   {
-    auto dir = [](const Scan& s, int j) { return Eigen::Vector2d(std::cos(s.angles[j]), std::sin(s.angles[j])); };
+    auto dir = [](const Scan& s, int j) { return Eigen::Vector2d(s.points[j] / s.ranges[j]); };
     cov_terms.push_back({dir(cur, k.i), dir(ref, k.j1), dir(ref, k.j2), cur.ranges[k.i],
                          ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
   }

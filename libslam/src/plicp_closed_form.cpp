@@ -82,13 +82,15 @@ void buildCost(const std::vector<PointToLine>& terms, Eigen::Matrix4d& M, Eigen:
   g.setZero();
   for (const auto& t : terms)
   {
-    // R p + t = Mi x with Mi = [1 0 px -py; 0 1 py px] (eq. 1 is linear in x).
-    Eigen::Matrix<double, 2, 4> Mi;
-    Mi << 1, 0, t.p.x(), -t.p.y(), 0, 1, t.p.y(), t.p.x();
-    const Eigen::Matrix2d C = t.n * t.n.transpose();
-    M += Mi.transpose() * C * Mi;
-    g -= 2 * Mi.transpose() * C * t.q;
+    // Residual n'(R p + t - q) = J x - n'q with J = n' [1 0 px -py; 0 1 py px]:
+    // the cost adds J'J to M and -2 (n'q) J' to g (a rank-one update).
+    const Eigen::Vector4d J(t.n.x(), t.n.y(), t.n.x() * t.p.x() + t.n.y() * t.p.y(),
+                            t.n.y() * t.p.x() - t.n.x() * t.p.y());
+    for (int r = 0; r < 4; r++)
+      for (int c = r; c < 4; c++) M(r, c) += J(r) * J(c);
+    g -= 2 * t.n.dot(t.q) * J;
   }
+  M.triangularView<Eigen::StrictlyLower>() = M.transpose();
 }
 
 std::array<double, 5> quarticCoefficients(const Eigen::Matrix4d& M, const Eigen::Vector4d& g)

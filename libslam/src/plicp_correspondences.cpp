@@ -73,7 +73,8 @@ double pseudoAngle(double x, double y)
   return a >= 2 ? a - 4 : a;
 }
 
-ReferenceIndex::ReferenceIndex(const Scan& ref)
+ReferenceIndex::ReferenceIndex(const Scan& ref, double min_segment_length)
+    : min_segment(min_segment_length)
 {
   const int n = static_cast<int>(ref.size());
   up_bigger.assign(n, n);
@@ -85,7 +86,7 @@ ReferenceIndex::ReferenceIndex(const Scan& ref)
   pseudo.resize(n);
   for (int i = 0; i < n; i++)
   {
-    dirs[i] = {std::cos(ref.angles[i]), std::sin(ref.angles[i])};
+    dirs[i] = ref.points[i] / ref.ranges[i];
     pseudo[i] = pseudoAngle(dirs[i].x(), dirs[i].y());
     // Keep the sequence non-decreasing at +pi, where the pseudo-angle wraps to -2.
     if (i > 0 && pseudo[i] < pseudo[i - 1]) pseudo[i] += 4;
@@ -114,32 +115,50 @@ ReferenceIndex::ReferenceIndex(const Scan& ref)
     const double step = ref.aperture / std::max<size_t>(1, ref.beam_count - 1);
     circular = ref.aperture + 2 * step >= 2 * M_PI;
   }
+  segment_lo.resize(n);
+  segment_hi.resize(n);
+  for (int j = 0; j < n; j++)
+  {
+    segment_lo[j] = segmentEnd(ref, circular, j, -1, min_segment);
+    segment_hi[j] = segmentEnd(ref, circular, j, +1, min_segment);
+  }
 }
+
+int segmentEnd(const Scan& ref, bool circular, int j1, int step, double min_segment)
+{
+  const int n = static_cast<int>(ref.size());
+  constexpr int kMaxWalk = 8;  // rays walked along the scan to reach min_segment
+  const double min2 = min_segment * min_segment;
+  for (int s = 1; s <= kMaxWalk && s < n; s++)
+  {
+    int k = j1 + step * s;
+    if (circular) k = (k + n) % n;
+    if (k < 0 || k >= n || k == j1) return -1;
+    if ((ref.points[k] - ref.points[j1]).squaredNorm() >= min2) return k;
+  }
+  return -1;
+}
+
+namespace
+{
+/** Of the two candidate ends (either may be -1), the one closer to p. */
+int closerEnd(const Scan& ref, int lo, int hi, const Eigen::Vector2d& p)
+{
+  if (lo < 0 || hi < 0) return std::max(lo, hi);
+  return (ref.points[lo] - p).squaredNorm() <= (ref.points[hi] - p).squaredNorm() ? lo : hi;
+}
+}  // namespace
 
 int secondPoint(const Scan& ref, bool circular, int j1, const Eigen::Vector2d& p,
                 double min_segment)
 {
-  const int n = static_cast<int>(ref.size());
-  constexpr int kMaxWalk = 8;  // rays walked along the scan to reach min_segment
-  // The first ray on one side of j1 at least min_segment away from it, or -1.
-  auto along = [&](int step) {
-    for (int s = 1; s <= kMaxWalk && s < n; s++)
-    {
-      int k = j1 + step * s;
-      if (circular) k = (k + n) % n;
-      if (k < 0 || k >= n || k == j1) return -1;
-      if ((ref.points[k] - ref.points[j1]).norm() >= min_segment) return k;
-    }
-    return -1;
-  };
-  const int lo = along(-1), hi = along(+1);
-  if (lo < 0 || hi < 0) return std::max(lo, hi);
-  return (ref.points[lo] - p).squaredNorm() <= (ref.points[hi] - p).squaredNorm() ? lo : hi;
+  return closerEnd(ref, segmentEnd(ref, circular, j1, -1, min_segment),
+                   segmentEnd(ref, circular, j1, +1, min_segment), p);
 }
 
 std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
                                                 const std::vector<Eigen::Vector2d>& cur_in_ref,
-                                                double max_dist, double min_segment)
+                                                double max_dist)
 {
   std::vector<Correspondence> out;
   const int n = static_cast<int>(ref.size());
@@ -160,7 +179,7 @@ std::vector<Correspondence> findCorrespondences(const Scan& ref, const Reference
     walk(ref, index, p, P, pp, up, +1, best_d2, best_k);
     walk(ref, index, p, P, pp, up - 1, -1, best_d2, best_k);
     if (best_k == kNone) continue;
-    const int j2 = secondPoint(ref, index.circular, best_k, p, min_segment);
+    const int j2 = closerEnd(ref, index.segment_lo[best_k], index.segment_hi[best_k], p);
     if (j2 < 0) continue;
     out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
   }
@@ -174,7 +193,7 @@ std::vector<Correspondence> findCorrespondencesBruteForce(
   std::vector<Correspondence> out;
   const int n = static_cast<int>(ref.size());
   if (n < 2) return out;
-  const ReferenceIndex index(ref);
+  const ReferenceIndex index(ref, min_segment);
   for (size_t i = 0; i < cur_in_ref.size(); i++)
   {
     double best_d2 = max_dist * max_dist;

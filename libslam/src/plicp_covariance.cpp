@@ -50,17 +50,20 @@ void normalProjectorDerivatives(const CovarianceTerm& t, Eigen::Matrix2d& dC_j1,
 
 TermDerivatives termDerivatives(const CovarianceTerm& t, const Eigen::Vector3d& x)
 {
-  const double th = x.z();
+  const Eigen::Matrix2d R = rot(x.z());
+  Eigen::Matrix2d R90;  // R(th + pi/2) = R90 R(th), R(th + pi) = -R(th)
+  R90 << 0, -1, 1, 0;
   const Eigen::Vector2d p = t.rho_i * t.dir_i;
   const Eigen::Vector2d q1 = t.rho_j1 * t.dir_j1, q2 = t.rho_j2 * t.dir_j2;
   const Eigen::Vector2d n = normalOf(q1, q2);
   const Eigen::Matrix2d C = n * n.transpose();
   // The vectors of the paper's eq. (7)-(8).
-  const Eigen::Vector2d v1 = rot(th + M_PI_2) * p;
-  const Eigen::Vector2d v2 = rot(th) * p + x.head<2>() - q1;
-  const Eigen::Vector2d v3 = rot(th) * t.dir_i;
-  const Eigen::Vector2d v4 = rot(th + M_PI_2) * t.dir_i;
-  const Eigen::Vector2d v5 = rot(th + M_PI) * p;
+  const Eigen::Vector2d Rp = R * p;
+  const Eigen::Vector2d v1 = R90 * Rp;
+  const Eigen::Vector2d v2 = Rp + x.head<2>() - q1;
+  const Eigen::Vector2d v3 = R * t.dir_i;
+  const Eigen::Vector2d v4 = R90 * v3;
+  const Eigen::Vector2d v5 = -Rp;
   Eigen::Matrix2d dC1, dC2;
   normalProjectorDerivatives(t, dC1, dC2);
 

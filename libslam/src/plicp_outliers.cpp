@@ -27,14 +27,17 @@ std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
 {
   if (in.empty()) return {};
   std::vector<double> sorted = errors;
-  auto quantile = [&](double q) {
-    const size_t k = std::min(sorted.size() - 1,
-                              static_cast<size_t>(std::ceil(q * sorted.size())) - (q > 0 ? 1 : 0));
-    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
-    return sorted[k];
+  auto rank = [&](double q) {
+    return std::min(sorted.size() - 1,
+                    static_cast<size_t>(std::ceil(q * sorted.size())) - (q > 0 ? 1 : 0));
   };
-  const double threshold =
-      std::min(quantile(keep_fraction), adaptive_mult * quantile(adaptive_quantile));
+  // Two order statistics with two partial partitions: the larger rank first, then the
+  // smaller one inside the lower part.
+  const size_t k_keep = rank(keep_fraction), k_adapt = rank(adaptive_quantile);
+  const size_t k_hi = std::max(k_keep, k_adapt), k_lo = std::min(k_keep, k_adapt);
+  std::nth_element(sorted.begin(), sorted.begin() + k_hi, sorted.end());
+  std::nth_element(sorted.begin(), sorted.begin() + k_lo, sorted.begin() + k_hi);
+  const double threshold = std::min(sorted[k_keep], adaptive_mult * sorted[k_adapt]);
   std::vector<Correspondence> out;
   out.reserve(in.size());
   for (size_t k = 0; k < in.size(); k++)

@@ -14,6 +14,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   epsilon_theta = mrpt::DEG2RAD(c.read_double(s, "epsilon_theta_DEG", mrpt::RAD2DEG(epsilon_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(max_correspondence_dist, double);
   MRPT_LOAD_CONFIG_VAR_CS(initial_correspondence_dist, double);
+  MRPT_LOAD_CONFIG_VAR_CS(coarse_start_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_segment_length, double);
   MRPT_LOAD_CONFIG_VAR_CS(remove_doubles, bool);
   MRPT_LOAD_CONFIG_VAR_CS(trim_keep_fraction, double);
@@ -33,6 +34,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   require(max_correspondence_dist > 0, "max_correspondence_dist must be > 0");
   require(initial_correspondence_dist >= max_correspondence_dist,
           "initial_correspondence_dist must be >= max_correspondence_dist");
+  require(coarse_start_fraction >= 0 && coarse_start_fraction <= 1, "coarse_start_fraction must be in [0, 1]");
   require(min_segment_length >= 0, "min_segment_length must be >= 0");
   require(trim_keep_fraction > 0 && trim_keep_fraction <= 1, "trim_keep_fraction must be in (0, 1]");
   require(adaptive_quantile > 0 && adaptive_quantile <= 1, "adaptive_quantile must be in (0, 1]");
@@ -49,6 +51,7 @@ void PlicpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("epsilon_theta_DEG", epsilon_theta, "[deg] ...and turns less than this");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_correspondence_dist, "[m] farther point pairs are not matched, once converged");
   MRPT_SAVE_CONFIG_VAR_COMMENT(initial_correspondence_dist, "[m] matching radius of the first iterations (halved as the estimate settles)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(coarse_start_fraction, "Start coarse if the guess matches fewer than this fraction of points within max_correspondence_dist");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_segment_length, "[m] shortest reference segment j1-j2 that defines a normal");
   MRPT_SAVE_CONFIG_VAR_COMMENT(remove_doubles, "Keep only the nearest of several points matched to one reference point");
   MRPT_SAVE_CONFIG_VAR_COMMENT(trim_keep_fraction, "Keep at most this fraction of the best matches");

@@ -27,9 +27,11 @@ struct ReferenceIndex
   std::vector<int> up_bigger, up_smaller, down_bigger, down_smaller;
   std::vector<Eigen::Vector2d> dirs;  ///< unit direction of each ray
   std::vector<double> pseudo;         ///< pseudoAngle() of each ray, non-decreasing
+  std::vector<int> segment_lo, segment_hi;  ///< segmentEnd() on each side of each ray
   bool circular = false;  ///< the scan closes on itself (aperture ~ 360 deg)
+  double min_segment = 0;  ///< [m] see secondPoint()
 
-  explicit ReferenceIndex(const Scan& ref);
+  ReferenceIndex(const Scan& ref, double min_segment_length);
 };
 
 /** A cheap monotone stand-in for atan2(y, x): in [-2, 2), 2 per half turn. */
@@ -42,9 +44,11 @@ double pseudoAngle(double x, double y);
  * correspondence (in increasing i). Ties are broken by the lower reference index. */
 std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
                                                 const std::vector<Eigen::Vector2d>& cur_in_ref,
-                                                double max_dist, double min_segment = 0);
+                                                double max_dist);
 
-/** Slow, obviously correct version: checks every reference point. Same output contract. */
+/** Slow, obviously correct version: checks every reference point, and finds j2 by walking
+ * the scan (secondPoint()). Same output as findCorrespondences() with an index built with
+ * the same `min_segment`. */
 std::vector<Correspondence> findCorrespondencesBruteForce(
     const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref, double max_dist,
     double min_segment = 0);
@@ -56,5 +60,8 @@ std::vector<Correspondence> findCorrespondencesBruteForce(
  * keeps range noise from tilting the normal on dense scans (doc/plicp.md). */
 int secondPoint(const Scan& ref, bool circular, int j1, const Eigen::Vector2d& p,
                 double min_segment);
+
+/** The first ray from j1 in direction `step` (+1/-1) at least `min_segment` away, or -1. */
+int segmentEnd(const Scan& ref, bool circular, int j1, int step, double min_segment);
 
 }  // namespace swslam::plicp

@@ -17,10 +17,11 @@ namespace swslam
 struct PlicpParams : public mrpt::config::CLoadableOptions
 {
   int max_iterations = 40;           ///< iteration cap
-  double epsilon_xy = 1e-4;          ///< [m] stop when the step's translation is below
+  double epsilon_xy = 5e-4;          ///< [m] stop when the step's translation is below
   double epsilon_theta = 1e-4;       ///< [rad] (ini: epsilon_theta_DEG) and its rotation below
   double max_correspondence_dist = 1.0;  ///< [m] farther point pairs are not matched ...
-  double initial_correspondence_dist = 4;  ///< [m] ... after a coarse-to-fine start from this
+  double initial_correspondence_dist = 4.0;  ///< [m] ... after a coarse-to-fine start from this
+  double coarse_start_fraction = 0.5;  ///< start coarse if the guess matches fewer points than this
   double min_segment_length = 0.2;   ///< [m] shortest j1-j2 segment defining a normal
   bool remove_doubles = true;        ///< keep one match per reference point (at the final radius)
   double trim_keep_fraction = 0.95;  ///< keep at most this fraction of the best matches
@@ -59,12 +60,16 @@ struct MatchResult
   bool ok() const { return status == MatchStatus::Converged || status == MatchStatus::MaxIterations; }
 };
 
-/** A reference scan with its precomputed search tables (reuse it for many matches). */
+/** A reference scan with its precomputed search tables (reuse it for many matches). The
+ * tables depend on params.min_segment_length, which matchScans() checks. */
 struct ReferenceScan
 {
   Scan scan;
   plicp::ReferenceIndex index;
-  explicit ReferenceScan(Scan s) : scan(std::move(s)), index(scan) {}
+  explicit ReferenceScan(Scan s, const PlicpParams& params = PlicpParams())
+      : scan(std::move(s)), index(scan, params.min_segment_length)
+  {
+  }
 };
 
 /** Matches `cur` against `ref` starting from `initial_guess` (the current sensor pose in the

@@ -1,0 +1,132 @@
+#pragma once
+// A simulator scenario: the world, the vehicle's run and the sensors, one .ini section
+// per parameter struct. Every key is required and unknown keys are errors, so a
+// misspelled key never silently falls back to a default.
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace swslam::sim
+{
+/** [world] Extent of the world (centered on the origin) and the random seed. */
+struct WorldParams : public mrpt::config::CLoadableOptions
+{
+  unsigned seed = 1;
+  double size_x = 200, size_y = 200;  ///< [m]
+  double grid_cell = 2.0;             ///< spatial index cell size [m]
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** [terrain] A lake (water inside an irregular shore), an optional island, rocks.
+ * lake_radius = 0 means no water at all (a forest for a ground vehicle). */
+struct TerrainParams : public mrpt::config::CLoadableOptions
+{
+  double lake_center_x = 0, lake_center_y = 0, lake_radius = 90;
+  double lake_roughness = 4;  ///< amplitude of the shore's irregularity [m]
+  double island_center_x = 0, island_center_y = 0;
+  double island_radius = 0;   ///< 0: no island
+  double island_roughness = 4;
+  unsigned rocks = 5;         ///< rocks scattered in the water
+  double rock_radius_min = 0.3, rock_radius_max = 1.2;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** [vegetation] Trunks and bushes on the land near the shore (everywhere without
+ * water), reeds in the water along the shore. Densities per 100 m^2 or per 100 m. */
+struct VegetationParams : public mrpt::config::CLoadableOptions
+{
+  double land_band = 20;          ///< vegetated land beyond the shore [m]
+  double trunk_density = 2;       ///< mean trunks per 100 m^2 of vegetated land
+  double density_variation = 0.5; ///< 0: uniform; 1: from clearings to twice the mean
+  double trunk_radius_min = 0.1, trunk_radius_max = 0.4;
+  double bush_density = 1;        ///< bushes per 100 m^2 of vegetated land
+  double bush_radius = 1.0;       ///< radius of a bush [m]
+  unsigned bush_leaves = 10;      ///< leaf clusters (small circles) per bush
+  double bush_pass_through = 0.5; ///< probability a ray goes through one leaf cluster
+  double reed_density = 5;        ///< reed clusters per 100 m of shore
+  unsigned reed_stems = 15;       ///< stems per cluster
+  double reed_pass_through = 0.4;
+  double path_clearance = 2.0;    ///< no vegetation or rock closer to the path [m]
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** [vehicle] A smooth path through waypoints at constant speed. */
+struct VehicleParams : public mrpt::config::CLoadableOptions
+{
+  std::vector<Eigen::Vector2d> waypoints{{0, 0}, {10, 0}};
+  bool closed = false;            ///< the path returns to its first waypoint
+  double speed = 1.5;             ///< [m/s]
+  double max_turn_rate = 0.5;     ///< [rad/s] (key max_turn_rate_DEG, in deg/s)
+  double start_time = 1.7e9;      ///< timestamp of the first scan [s, UNIX time]
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** [sensor] A 2D LiDAR (defaults: Hokuyo UTM-30LX-like, as in the paper). */
+struct SensorParams : public mrpt::config::CLoadableOptions
+{
+  std::string label = "LIDAR";
+  double fov = 270 * M_PI / 180;        ///< [rad] (key fov_DEG)
+  double resolution = 0.25 * M_PI / 180;  ///< [rad] (key resolution_DEG)
+  double max_range = 60, min_range = 0.1;  ///< [m]
+  double rate = 40;                     ///< scans per second [Hz]
+  double range_noise_std = 0.03;        ///< Gaussian range noise [m]
+  double dropout_prob = 0.0;            ///< probability a ray returns nothing
+  double pose_x = 0, pose_y = 0, pose_z = 0.3, pose_yaw = 0;  ///< mounting on the vehicle
+
+  /** Number of rays: fov / resolution + 1. */
+  size_t rays() const;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** [odometry] Optional noisy odometry observations, one per scan. */
+struct OdometryParams : public mrpt::config::CLoadableOptions
+{
+  bool enabled = true;
+  double speed_noise_std = 0.02;  ///< relative std of each travelled increment
+  double yaw_drift = 0;           ///< constant yaw-rate bias [rad/s] (key yaw_drift_DEG_per_s)
+  double yaw_noise_std = 0;       ///< std of each yaw increment [rad] (key yaw_noise_std_DEG)
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+struct Scenario
+{
+  std::string name;  ///< output file stem
+  WorldParams world;
+  TerrainParams terrain;
+  VehicleParams vehicle;
+  SensorParams sensor;
+  VegetationParams vegetation;
+  OdometryParams odometry;
+};
+
+/** Reads and checks a scenario file; the name is the file's stem. Throws
+ * std::invalid_argument naming the file, section and key on a missing, unknown or
+ * malformed key or a value out of range. */
+Scenario loadScenario(const std::string& path);
+
+/** The scenario as .ini text that loadScenario() reads back (the name is not stored). */
+std::string formatScenario(const Scenario& s);
+
+/** Checks values (ranges, sensor geometry) without the world; throws naming the key. */
+void validateScenario(const Scenario& s);
+
+/** Parses "x y, x y, ..." (at least two points). Throws std::invalid_argument. */
+std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text);
+std::string formatWaypoints(const std::vector<Eigen::Vector2d>& pts);
+
+}  // namespace swslam::sim

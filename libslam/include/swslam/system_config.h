@@ -1,0 +1,31 @@
+#pragma once
+// The parameters of every module, loaded from one .ini file (config/default.ini): one
+// section per module, strictly (unknown sections and keys are errors naming them).
+
+#include <swslam/carmen_log.h>
+#include <swslam/graph_optimizer_params.h>
+#include <swslam/plicp/plicp.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <string>
+#include <vector>
+
+namespace swslam
+{
+struct SystemParams
+{
+  PlicpParams plicp;    ///< [plicp]
+  CarmenParams carmen;  ///< [carmen]
+  GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
+
+  /** Section names, in file order. */
+  static const std::vector<std::string>& sections();
+};
+
+/** Loads every section present; absent sections keep their defaults. Throws
+ * std::invalid_argument naming the section or key that is wrong. */
+SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg);
+SystemParams loadSystemParams(const std::string& ini_path);
+
+}  // namespace swslam

@@ -1,0 +1,98 @@
+// Every shipped config file loads strictly; wrong keys and sections are errors naming them.
+#include <swslam/config_keys.h>
+#include <swslam/system_config.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/system/string_utils.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace swslam;
+
+TEST(Config, EveryFileInConfigDirLoads)
+{
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(SWSLAM_SOURCE_DIR) + "/config"))
+  {
+    if (e.path().extension() != ".ini") continue;
+    files++;
+    EXPECT_NO_THROW(loadSystemParams(e.path().string())) << e.path();
+  }
+  EXPECT_GE(files, 1u);
+}
+
+TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
+{
+  // config/default.ini documents every parameter: each key a module writes is in the file.
+  const mrpt::config::CConfigFile file(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
+  const SystemParams defaults;
+  mrpt::config::CConfigFileMemory written;
+  defaults.plicp.saveToConfigFile(written, "plicp");
+  defaults.carmen.saveToConfigFile(written, "carmen");
+  defaults.graph_optimizer.saveToConfigFile(written, "graph_optimizer");
+  for (const auto& section : SystemParams::sections())
+  {
+    std::vector<std::string> keys;
+    written.getAllKeys(section, keys);
+    ASSERT_FALSE(keys.empty()) << section;
+    for (auto key : keys)
+    {
+      key = mrpt::system::trim(key);
+      EXPECT_TRUE(file.keyExists(section, key)) << "[" << section << "] " << key << " missing";
+    }
+  }
+}
+
+TEST(Config, DefaultFileValuesEqualTheInClassDefaults)
+{
+  const auto loaded = loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
+  const PlicpParams d;
+  EXPECT_DOUBLE_EQ(loaded.plicp.max_correspondence_dist, d.max_correspondence_dist);
+  EXPECT_DOUBLE_EQ(loaded.plicp.initial_correspondence_dist, d.initial_correspondence_dist);
+  EXPECT_DOUBLE_EQ(loaded.plicp.min_segment_length, d.min_segment_length);
+  EXPECT_NEAR(loaded.plicp.epsilon_theta, d.epsilon_theta, 1e-6);
+  EXPECT_NEAR(loaded.plicp.max_correction_theta, d.max_correction_theta, 1e-9);
+  EXPECT_EQ(loaded.plicp.max_iterations, d.max_iterations);
+  EXPECT_EQ(loaded.plicp.remove_doubles, d.remove_doubles);
+}
+
+TEST(Config, MisspelledKeyIsAnErrorNamingIt)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicp]\nmax_iteration = 10\n");
+  try
+  {
+    loadSystemParams(cfg);
+    FAIL();
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("'max_iteration'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("[plicp]"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Config, UnknownSectionIsAnError)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicpp]\nmax_iterations = 10\n");
+  EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+TEST(Config, OutOfRangeValueIsAnError)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicp]\ntrim_keep_fraction = 1.5\n");
+  EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+TEST(Config, MissingFileIsAnError)
+{
+  EXPECT_THROW(loadSystemParams(std::string("/nonexistent/x.ini")), std::invalid_argument);
+}
+
+TEST(Config, InlineCommentIsAnErrorNotASilentFalse)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicp]\nremove_doubles = true   # keep one\n");
+  EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# `make install` into a scratch prefix, then build and run a downstream project that does
+# find_package(swslam) and links swslam::slam.
+set -euo pipefail
+src=$1 bin=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$bin" --prefix "$work/prefix" > "$work/install.log"
+test -f "$work/prefix/lib/cmake/swslam/swslamConfig.cmake" || { echo "no package config installed"; exit 1; }
+test -f "$work/prefix/include/swslam/plicp/plicp.h" || { echo "headers not installed"; exit 1; }
+test -f "$work/prefix/share/swslam/config/default.ini" || { echo "config not installed"; exit 1; }
+cmake -S "$src/tests/consumer" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
+cmake --build "$work/build" -j 2 > "$work/build.log" || { cat "$work/build.log"; exit 1; }
+"$work/build/consumer"
