@@ -9,23 +9,36 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <ctime>
 #include <functional>
 #include <unordered_map>
 #include <vector>
 
 namespace
 {
-double medianTime(int repeats, const std::function<void()>& run)
+double processCpuSeconds()
 {
-  std::vector<double> t;
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/** Median wall and CPU time of `repeats` calls of `run`, stored in `out`. */
+void timeRuns(int repeats, const std::function<void()>& run, SolverRun& out)
+{
+  std::vector<double> wall, cpu;
   for (int k = 0; k < repeats; ++k)
   {
     mrpt::system::CTicTac timer;
+    const double cpu0 = processCpuSeconds();
     run();
-    t.push_back(timer.Tac());
+    wall.push_back(timer.Tac());
+    cpu.push_back(processCpuSeconds() - cpu0);
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  out.time_s = wall[wall.size() / 2];
+  out.cpu_s = cpu[cpu.size() / 2];
 }
 
 /** Same residual as swslam::se2Error, times the square root of the information. */
@@ -63,34 +76,34 @@ double chi2Of(const swslam::PoseGraph& graph)
 SolverRun runOurs(const swslam::PoseGraph& graph, const swslam::GraphOptimizerParams& params,
                   int repeats)
 {
-  SolverRun run{"swslam", 0, 0, graph};
-  run.time_s = medianTime(repeats, [&] {
+  SolverRun run{"swslam", 0, 0, 0, graph};
+  timeRuns(repeats, [&] {
     run.result = graph;
     run.iterations = swslam::optimizeFull(run.result, params).iterations;
-  });
+  }, run);
   return run;
 }
 
 SolverRun runMrpt(const swslam::PoseGraph& graph, int repeats)
 {
-  SolverRun run{"mrpt-levmarq", 0, 0, graph};
+  SolverRun run{"mrpt-levmarq", 0, 0, 0, graph};
   mrpt::graphs::CNetworkOfPoses2DInf net;
-  run.time_s = medianTime(repeats, [&] {
+  timeRuns(repeats, [&] {
     net = graph.network();
     mrpt::graphslam::TResultInfoSpaLevMarq info;
     mrpt::graphslam::optimize_graph_spa_levmarq(net, info);
     run.iterations = info.num_iters;
-  });
+  }, run);
   for (const auto& [id, pose] : net.nodes) run.result.setPose(id, pose);
   return run;
 }
 
 SolverRun runCeres(const swslam::PoseGraph& graph, int repeats)
 {
-  SolverRun run{"ceres", 0, 0, graph};
+  SolverRun run{"ceres", 0, 0, 0, graph};
   const std::vector<swslam::PoseGraph::TNodeID> ids = graph.nodeIds();
   std::vector<double> x;
-  run.time_s = medianTime(repeats, [&] {
+  timeRuns(repeats, [&] {
     x.clear();
     std::unordered_map<swslam::PoseGraph::TNodeID, size_t> index;
     for (const auto id : ids)
@@ -119,7 +132,7 @@ SolverRun runCeres(const swslam::PoseGraph& graph, int repeats)
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
     run.iterations = summary.iterations.size();
-  });
+  }, run);
   for (size_t k = 0; k < ids.size(); ++k)
     run.result.setPose(ids[k], mrpt::poses::CPose2D(x[3 * k], x[3 * k + 1], x[3 * k + 2]));
   return run;

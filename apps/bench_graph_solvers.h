@@ -12,6 +12,7 @@ struct SolverRun
 {
   std::string solver;
   double time_s = 0;       ///< median wall time over the repeats, problem set-up included
+  double cpu_s = 0;        ///< median process CPU time (all threads): steadier on a busy machine
   size_t iterations = 0;
   swslam::PoseGraph result;
 };
