@@ -4,6 +4,7 @@
 
 #include <mrpt/system/CTicTac.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -82,6 +83,83 @@ void applyStep(const std::vector<int>& var, const Eigen::VectorXd& dx, std::vect
     x[n].z() = wrapAngle(x[n].z());
   }
 }
+
+/** Variable index per pose (-1: held fixed). Without any fixed pose, pose 0 is the gauge. */
+std::vector<int> variableIndex(const GraphProblem& p)
+{
+  const bool any_fixed = std::any_of(p.fixed.begin(), p.fixed.end(), [](char f) { return f != 0; });
+  std::vector<int> var(p.poses.size(), -1);
+  int free_count = 0;
+  for (size_t n = 0; n < var.size(); ++n)
+    if (!(p.fixed[n] || (!any_fixed && n == 0))) var[n] = free_count++;
+  return var;
+}
+
+struct Outcome
+{
+  OptimizationStatus status = OptimizationStatus::MaxIterations;
+  std::string why = "reached max_iterations";
+};
+
+/** Levenberg-Marquardt with IRLS reweighting at every linearization (eq. 11-13). Updates x
+ * and ev (its evaluation) on every accepted step, and the iteration counts of rep. */
+Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
+                           const GraphOptimizerParams& params, std::vector<Pose2>& x,
+                           Evaluation& ev, OptimizationReport& rep)
+{
+  const BarronKernel kernel = params.kernel();
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& e : p.edges)
+    if (var[e.i] >= 0 && var[e.j] >= 0) pairs.emplace_back(var[e.i], var[e.j]);
+  NormalEquations ne(static_cast<int>(rep.free_nodes), pairs);
+
+  double lambda = params.lm_initial_lambda, nu = 2.0;
+  Eigen::VectorXd dx;
+  bool relinearize = true;
+  while (rep.iterations < params.max_iterations)
+  {
+    if (relinearize) linearize(p, x, var, kernel, ne);
+    relinearize = false;
+    if (ne.gradient().lpNorm<Eigen::Infinity>() < params.gradient_tolerance)
+      return {OptimizationStatus::Converged, "gradient below tolerance"};
+    ++rep.iterations;
+    const bool solved = ne.solveDamped(lambda, dx);
+    std::vector<Pose2> x_new = x;
+    if (solved) applyStep(var, dx, x_new);
+    const Evaluation ev_new = solved ? evaluate(p, x_new, kernel) : Evaluation{};
+    const double decrease = ev.cost - ev_new.cost;
+    const double predicted = solved ? ne.predictedDecrease(lambda, dx) : 0.0;
+    if (solved && std::isfinite(ev_new.cost) && decrease > 0 && predicted > 0)
+    {
+      // Accepted: shrink the damping by the gain ratio (Nielsen's rule).
+      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * decrease / predicted - 1.0, 3));
+      nu = 2.0;
+      x.swap(x_new);
+      ev = ev_new;
+      ++rep.accepted_steps;
+      relinearize = true;
+      double x_norm2 = 0;
+      for (const auto& pose : x) x_norm2 += pose.squaredNorm();
+      if (!std::isfinite(ev.cost) || !std::isfinite(x_norm2))
+        return {OptimizationStatus::Diverged, "estimate became non-finite"};
+      if (decrease <= params.relative_cost_tolerance * ev.cost)
+        return {OptimizationStatus::Converged, "relative cost decrease below tolerance"};
+      if (dx.norm() <= params.step_tolerance * (std::sqrt(x_norm2) + params.step_tolerance))
+        return {OptimizationStatus::Converged, "step below tolerance"};
+      continue;
+    }
+    lambda *= nu;
+    nu *= 2.0;
+    if (lambda > params.lm_max_lambda)
+    {
+      // No decrease even for tiny steps: at a minimum, unless nothing ever solved.
+      if (rep.accepted_steps == 0 && !solved)
+        return {OptimizationStatus::Diverged, "the damped normal equations never solved"};
+      return {OptimizationStatus::Converged, "no further decrease (damping at maximum)"};
+    }
+  }
+  return {};
+}
 }  // namespace
 
 const char* statusName(OptimizationStatus s)
@@ -121,108 +199,36 @@ OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimi
   mrpt::system::CTicTac timer;
   params.check();
   checkProblem(problem);
-  const BarronKernel kernel = params.kernel();
   OptimizationReport rep;
   rep.edges = problem.edges.size();
-
-  // Variable index per pose (-1: held fixed). Without any fixed pose, pose 0 is the gauge.
-  std::vector<int> var(problem.poses.size(), -1);
-  bool any_fixed = false;
-  for (char f : problem.fixed) any_fixed |= f != 0;
-  int free_count = 0;
-  for (size_t n = 0; n < var.size(); ++n)
-    if (!(problem.fixed[n] || (!any_fixed && n == 0))) var[n] = free_count++;
-  rep.free_nodes = free_count;
-  rep.fixed_nodes = problem.poses.size() - free_count;
+  const std::vector<int> var = variableIndex(problem);
+  rep.free_nodes = std::count_if(var.begin(), var.end(), [](int v) { return v >= 0; });
+  rep.fixed_nodes = problem.poses.size() - rep.free_nodes;
 
   std::vector<Pose2> x = problem.poses;
-  Evaluation ev = evaluate(problem, x, kernel);
+  Evaluation ev = evaluate(problem, x, params.kernel());
   rep.initial_chi2 = rep.final_chi2 = ev.chi2;
   rep.initial_cost = rep.final_cost = ev.cost;
   rep.active_sq_residuals = ev.active;
-  auto finish = [&](OptimizationStatus status, const std::string& why) {
-    rep.status = status;
-    rep.message = why;
-    rep.time_s = timer.Tac();
-    return rep;
-  };
+  Outcome out;
   if (!std::isfinite(ev.cost))
-    return finish(OptimizationStatus::Diverged, "initial cost is not finite (NaN pose?)");
-  if (free_count == 0 || problem.edges.empty())
-    return finish(OptimizationStatus::NothingToOptimize, "no free pose or no edge");
+    out = {OptimizationStatus::Diverged, "initial cost is not finite (NaN pose?)"};
+  else if (rep.free_nodes == 0 || problem.edges.empty())
+    out = {OptimizationStatus::NothingToOptimize, "no free pose or no edge"};
+  else
+    out = levenbergMarquardt(problem, var, params, x, ev, rep);
 
-  std::vector<std::pair<int, int>> pairs;
-  for (const auto& e : problem.edges)
-    if (var[e.i] >= 0 && var[e.j] >= 0) pairs.emplace_back(var[e.i], var[e.j]);
-  NormalEquations ne(free_count, pairs);
-
-  double lambda = params.lm_initial_lambda, nu = 2.0;
-  OptimizationStatus status = OptimizationStatus::MaxIterations;
-  std::string why = "reached max_iterations";
-  Eigen::VectorXd dx;
-  bool relinearize = true;
-  while (rep.iterations < params.max_iterations)
+  if (out.status != OptimizationStatus::Diverged && out.status != OptimizationStatus::NothingToOptimize)
   {
-    if (relinearize) linearize(problem, x, var, kernel, ne);
-    relinearize = false;
-    if (ne.gradient().lpNorm<Eigen::Infinity>() < params.gradient_tolerance)
-    {
-      status = OptimizationStatus::Converged, why = "gradient below tolerance";
-      break;
-    }
-    ++rep.iterations;
-    const bool solved = ne.solveDamped(lambda, dx);
-    std::vector<Pose2> x_new = x;
-    if (solved) applyStep(var, dx, x_new);
-    const Evaluation ev_new = solved ? evaluate(problem, x_new, kernel) : Evaluation{};
-    const double decrease = ev.cost - ev_new.cost;
-    const double predicted = solved ? ne.predictedDecrease(lambda, dx) : 0.0;
-    if (solved && std::isfinite(ev_new.cost) && decrease > 0 && predicted > 0)
-    {
-      // Accepted: shrink the damping by the gain ratio (Nielsen's rule).
-      const double rho = decrease / predicted;
-      lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
-      nu = 2.0;
-      x.swap(x_new);
-      ev = ev_new;
-      ++rep.accepted_steps;
-      relinearize = true;
-      double x_norm = 0;
-      for (const auto& p : x) x_norm += p.squaredNorm();
-      if (decrease <= params.relative_cost_tolerance * ev.cost)
-      {
-        status = OptimizationStatus::Converged, why = "relative cost decrease below tolerance";
-        break;
-      }
-      if (dx.norm() <= params.step_tolerance * (std::sqrt(x_norm) + params.step_tolerance))
-      {
-        status = OptimizationStatus::Converged, why = "step below tolerance";
-        break;
-      }
-      continue;
-    }
-    lambda *= nu;
-    nu *= 2.0;
-    if (lambda > params.lm_max_lambda)
-    {
-      // No decrease even for tiny steps: at a minimum, unless nothing ever solved.
-      if (rep.accepted_steps == 0 && !solved)
-        status = OptimizationStatus::Diverged, why = "the damped normal equations never solved";
-      else
-        status = OptimizationStatus::Converged, why = "no further decrease (damping at maximum)";
-      break;
-    }
+    problem.poses = x;
+    rep.final_chi2 = ev.chi2;
+    rep.final_cost = ev.cost;
+    rep.active_sq_residuals = ev.active;
   }
-  bool finite = std::isfinite(ev.cost);
-  for (const auto& p : x) finite &= p.allFinite();
-  if (!finite) status = OptimizationStatus::Diverged, why = "estimate became non-finite";
-  if (status == OptimizationStatus::Diverged) return finish(status, why);
-
-  problem.poses = x;
-  rep.final_chi2 = ev.chi2;
-  rep.final_cost = ev.cost;
-  rep.active_sq_residuals = ev.active;
-  return finish(status, why);
+  rep.status = out.status;
+  rep.message = out.why;
+  rep.time_s = timer.Tac();
+  return rep;
 }
 
 }  // namespace swslam
