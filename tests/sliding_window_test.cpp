@@ -113,3 +113,25 @@ TEST(SlidingWindow, RobustifiedEdgesFollowTheirKind)
     EXPECT_EQ(sub.problem.edges[k].robust, kind == swslam::EdgeKind::Consecutive);
   }
 }
+
+TEST(SlidingWindow, DivergenceIsReportedAndLeavesTheGraphIntact)
+{
+  // An information of 1e308 on a 10 m error overflows the cost to infinity.
+  swslam::PoseGraph g;
+  for (int k = 0; k < 3; ++k) g.addNode(k, mrpt::poses::CPose2D(k, 0, 0));
+  mrpt::poses::CPosePDFGaussianInf z;
+  z.mean = mrpt::poses::CPose2D(1, 0, 0);
+  z.cov_inv.setIdentity();
+  g.addEdge(0, 1, z, swslam::EdgeKind::Consecutive);
+  z.mean = mrpt::poses::CPose2D(11, 0, 0);
+  z.cov_inv *= 1e308;
+  g.addEdge(1, 2, z, swslam::EdgeKind::Consecutive);
+  const swslam::PoseGraph before = g;
+  for (bool window : {false, true})
+  {
+    const auto rep = window ? swslam::optimizeWindow(g, {}) : swslam::optimizeFull(g, {});
+    EXPECT_EQ(rep.status, swslam::OptimizationStatus::Diverged);
+    EXPECT_NE(rep.message.find("not finite"), std::string::npos);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(g.pose(k), before.pose(k));
+  }
+}

@@ -212,7 +212,7 @@ OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimi
   rep.active_sq_residuals = ev.active;
   Outcome out;
   if (!std::isfinite(ev.cost))
-    out = {OptimizationStatus::Diverged, "initial cost is not finite (NaN pose?)"};
+    out = {OptimizationStatus::Diverged, "initial cost is not finite (a NaN pose or an overflowing information matrix)"};
   else if (rep.free_nodes == 0 || problem.edges.empty())
     out = {OptimizationStatus::NothingToOptimize, "no free pose or no edge"};
   else
