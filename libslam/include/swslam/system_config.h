@@ -4,6 +4,7 @@
 
 #include <swslam/carmen_log.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/tracking/tracking_params.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -15,6 +16,7 @@ namespace swslam
 struct SystemParams
 {
   PlicpParams plicp;    ///< [plicp]
+  TrackingParams tracking;  ///< [tracking]
   CarmenParams carmen;  ///< [carmen]
 
   /** Section names, in file order. */
