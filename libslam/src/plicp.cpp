@@ -4,6 +4,7 @@
 #include "swslam/plicp/covariance.h"
 #include "swslam/plicp/outliers.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swslam
@@ -186,6 +187,61 @@ double startRadius(const ReferenceScan& reference, const Scan& cur, const Eigen:
   return params.initial_correspondence_dist;
 }
 
+/** A full run (start radius, then iterations) from `start`. */
+IcpRun runFrom(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& start,
+               const PlicpParams& params)
+{
+  IcpRun run;
+  run.x = start;
+  std::vector<Correspondence> probe;
+  const double radius = startRadius(reference, cur, start, params, probe);
+  iterate(reference, cur, radius, params, run, std::move(probe));
+  return run;
+}
+
+/** Quality of a run's end: current points within 3 range sigmas of the reference surface
+ * (0 for a failed run). Unlike the raw overlap, a wrong local minimum scores low. */
+size_t inlierCount(const ReferenceScan& reference, const Scan& cur, const IcpRun& run,
+                   const PlicpParams& params)
+{
+  if (run.status == MatchStatus::TooFewCorrespondences || run.status == MatchStatus::Diverged)
+    return 0;
+  const auto pts = transformed(cur, run.x);
+  const auto found = plicp::findCorrespondences(reference.scan, reference.index, pts,
+                                                params.max_correspondence_dist);
+  const auto errors = lineErrors(reference.scan, pts, found);
+  return static_cast<size_t>(std::count_if(errors.begin(), errors.end(), [&](double e) {
+    return e < 3 * params.range_sigma;
+  }));
+}
+
+/** PLICP from the guess; if it ends poorly (few inliers), also from the guess turned by
+ * +-1..retry_rotations steps, keeping a retry only if it has retry_min_gain times the
+ * inliers of the first run (a low-overlap pair must not be "improved" into a wrong pose). */
+IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x0,
+                      const PlicpParams& params)
+{
+  IcpRun run = runFrom(reference, cur, x0, params);
+  const size_t first = inlierCount(reference, cur, run, params);
+  if (first >= params.retry_below_inlier_fraction * cur.size()) return run;
+  size_t best = first;
+  int iterations = run.iterations;
+  for (int h = 1; h <= 2 * params.retry_rotations; h++)
+  {
+    const int k = (h + 1) / 2 * (h % 2 ? 1 : -1);  // +1, -1, +2, -2, ...
+    IcpRun trial = runFrom(reference, cur, x0 + Eigen::Vector3d(0, 0, k * params.retry_rotation_step), params);
+    iterations += trial.iterations;
+    const size_t n = inlierCount(reference, cur, trial, params);
+    if (n > best && n >= params.retry_min_gain * first)
+    {
+      best = n;
+      run = std::move(trial);
+    }
+  }
+  run.iterations = iterations;
+  return run;
+}
+
 MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                        const mrpt::poses::CPose2D& initial_guess, const PlicpParams& params)
 {
@@ -206,11 +262,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                     std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
-  IcpRun run;
-  run.x = x0;
-  std::vector<Correspondence> probe;
-  const double radius = startRadius(reference, cur, x0, params, probe);
-  iterate(reference, cur, radius, params, run, std::move(probe));
+  const IcpRun run = runWithRetries(reference, cur, x0, params);
   res.iterations = run.iterations;
   res.status = run.status;
   if (!res.ok()) return fail(res, run.status, run.message);
