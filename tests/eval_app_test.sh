@@ -32,7 +32,8 @@ grep -q '^# ATE ' "$DIR/a.txt" || fail "human summary"
 
 # 2. A 2% scale error: RPE per pose 0.02 * 0.3 m, per 1 m segment (4 steps) 0.024 m.
 awk -v scale=1.02 -f "$SRC/scripts/perturb-tum.awk" "$DIR/gt.tum" > "$DIR/scaled.tum"
-"$BIN" ate "$DIR/scaled.tum" "$DIR/gt.tum" --max-dt 0.001 > "$DIR/b.txt" || fail "ate on scaled copy"
+"$BIN" ate "$DIR/scaled.tum" "$DIR/gt.tum" --max-dt 0.001 > "$DIR/b.txt" \
+  || fail "ate on scaled copy"
 near "$(value rpe_trans_rmse "$DIR/b.txt")" 0.006 1e-6 || fail "RPE per pose of a scale error"
 near "$(value rpe_seg_trans_rmse "$DIR/b.txt")" 0.024 1e-4 || fail "RPE per metre of a scale error"
 awk -v v="$(value ate_rmse "$DIR/b.txt")" 'BEGIN { exit !(v > 0.1) }' || fail "ATE of a scale error"
@@ -45,7 +46,8 @@ cat "$DIR/c.txt"
 near "$(value trans_abs_mean "$DIR/c.txt")" 0 1e-6 || fail "relations error of the truth"
 near "$(value rot_abs_mean_deg "$DIR/c.txt")" 0 1e-5 || fail "relations rotation of the truth"
 awk -v sigma=0.02 -v seed=4 -f "$SRC/scripts/perturb-tum.awk" "$DIR/gt.tum" > "$DIR/noisy.tum"
-"$BIN" relations "$DIR/noisy.tum" "$DIR/gt.relations" > "$DIR/d.txt" || fail "relations on noisy copy"
+"$BIN" relations "$DIR/noisy.tum" "$DIR/gt.relations" > "$DIR/d.txt" \
+  || fail "relations on noisy copy"
 awk -v v="$(value trans_abs_mean "$DIR/d.txt")" 'BEGIN { exit !(v > 0.01) }' || fail "noise unseen"
 
 # 4. Bad input: a clear message and exit code 1.

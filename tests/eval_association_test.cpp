@@ -19,7 +19,8 @@ std::vector<std::pair<double, double>> slowAssociate(const std::vector<StampedPo
   std::vector<std::tuple<double, size_t, size_t>> all;
   for (size_t i = 0; i < est.size(); i++)
     for (size_t j = 0; j < gt.size(); j++)
-      if (std::abs(est[i].t - gt[j].t) <= max_dt) all.emplace_back(std::abs(est[i].t - gt[j].t), i, j);
+      if (std::abs(est[i].t - gt[j].t) <= max_dt)
+        all.emplace_back(std::abs(est[i].t - gt[j].t), i, j);
   std::stable_sort(all.begin(), all.end(),
                    [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
   std::vector<bool> ue(est.size()), ug(gt.size());

@@ -8,22 +8,12 @@
 
 #include "eval_test_support.h"
 
-namespace
-{
-std::vector<swslam::eval::PosePair> pairUp(const std::vector<swslam::StampedPose>& est,
-                                           const std::vector<swslam::StampedPose>& gt)
-{
-  std::vector<swslam::eval::PosePair> out;
-  for (size_t i = 0; i < gt.size(); i++) out.push_back({est[i].t, gt[i].t, est[i].pose, gt[i].pose});
-  return out;
-}
-}  // namespace
-
 TEST(EvalAte, RigidlyMovedTrajectoryHasZeroErrorAndTheInverseAlignment)
 {
   const auto gt = swslam::test::wanderingPath(300, 50, 11);
   const mrpt::poses::CPose2D offset(-7.5, 3.0, 2.2);
-  const auto r = swslam::eval::absoluteTrajectoryError(pairUp(swslam::test::transformed(gt, offset), gt));
+  const auto moved = swslam::test::transformed(gt, offset);
+  const auto r = swslam::eval::absoluteTrajectoryError(swslam::test::pairUp(moved, gt));
   EXPECT_NEAR(r.position.rmse, 0, 1e-9);
   EXPECT_NEAR(r.position.max, 0, 1e-9);
   const auto inv = -offset;
@@ -45,7 +35,7 @@ TEST(EvalAte, RadialNoiseOnACircleGivesExactlyItsMagnitude)
     est.push_back({double(k), {10.2 * std::cos(a), 10.2 * std::sin(a), a + M_PI / 2}});
   }
   const auto r = swslam::eval::absoluteTrajectoryError(
-      pairUp(swslam::test::transformed(est, {4, -1, 0.4}), gt));
+      swslam::test::pairUp(swslam::test::transformed(est, {4, -1, 0.4}), gt));
   EXPECT_NEAR(r.position.rmse, 0.2, 1e-9);
   EXPECT_NEAR(r.position.mean, 0.2, 1e-9);
   EXPECT_NEAR(r.position.median, 0.2, 1e-9);
@@ -65,7 +55,7 @@ TEST(EvalAte, AlignmentNeverDoesWorseThanTheIdentity)
     p.pose = {p.pose.x() + dx, p.pose.y() + dy, p.pose.phi()};
     sum_sq += dx * dx + dy * dy;
   }
-  const auto r = swslam::eval::absoluteTrajectoryError(pairUp(est, gt));
+  const auto r = swslam::eval::absoluteTrajectoryError(swslam::test::pairUp(est, gt));
   EXPECT_LE(r.position.rmse, std::sqrt(sum_sq / gt.size()));
   EXPECT_GT(r.position.rmse, 0.5 * 0.3 * std::sqrt(2.0));  // noise does not vanish
   EXPECT_THROW(swslam::eval::absoluteTrajectoryError({}), std::invalid_argument);

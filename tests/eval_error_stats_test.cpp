@@ -14,12 +14,12 @@ TEST(EvalErrorStats, KnownValues)
   EXPECT_DOUBLE_EQ(s.max, 9);
   double dev = 0;
   for (double x : {3, 1, 4, 1, 5, 9}) dev += (x - 23.0 / 6) * (x - 23.0 / 6);
-  EXPECT_DOUBLE_EQ(s.std, std::sqrt(dev / 5));
+  EXPECT_DOUBLE_EQ(s.stddev, std::sqrt(dev / 5));
 
   const auto odd = swslam::eval::errorStats({2, 7, 1});
   EXPECT_DOUBLE_EQ(odd.median, 2);
   const auto single = swslam::eval::errorStats({0.5});
-  EXPECT_DOUBLE_EQ(single.std, 0);
+  EXPECT_DOUBLE_EQ(single.stddev, 0);
   EXPECT_DOUBLE_EQ(single.median, 0.5);
 }
 

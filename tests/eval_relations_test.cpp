@@ -117,7 +117,7 @@ TEST(EvalRelations, NoisyEstimateEqualsTheMatrixFormula)
   EXPECT_NEAR(r.rotation.mean, ma, 1e-12);
   EXPECT_NEAR(r.translation_sq.mean, mt2, 1e-12);
   EXPECT_NEAR(r.rotation_sq.mean, ma2, 1e-12);
-  EXPECT_GT(r.translation.std, 0);
+  EXPECT_GT(r.translation.stddev, 0);
 
   // A stamp outside the tolerance is unmatched.
   EXPECT_EQ(swslam::eval::relationsError(est, rel, 0.001).used, 0u);

@@ -8,21 +8,10 @@
 
 using swslam::test::homogeneous;
 
-namespace
-{
-std::vector<swslam::eval::PosePair> pairUp(const std::vector<swslam::StampedPose>& est,
-                                           const std::vector<swslam::StampedPose>& gt)
-{
-  std::vector<swslam::eval::PosePair> out;
-  for (size_t i = 0; i < gt.size(); i++) out.push_back({est[i].t, gt[i].t, est[i].pose, gt[i].pose});
-  return out;
-}
-}  // namespace
-
 TEST(EvalRpe, DistancePairsMatchABruteForcePathLength)
 {
   const auto gt = swslam::test::wanderingPath(120, 0, 4);
-  const auto pairs = pairUp(gt, gt);
+  const auto pairs = swslam::test::pairUp(gt, gt);
   for (const double d : {0.25, 1.0, 3.7})
   {
     std::vector<std::pair<size_t, size_t>> want;
@@ -56,7 +45,7 @@ TEST(EvalRpe, EqualsTheMatrixFormulaOnNoisyPoses)
   const auto gt = swslam::test::wanderingPath(80, 0, 12);
   auto est = swslam::test::transformed(gt, {1, 2, 0.5});  // RPE ignores a global offset
   for (auto& p : est) p.pose = {p.pose.x() + n(rng), p.pose.y() + n(rng), p.pose.phi() + n(rng)};
-  const auto pairs = pairUp(est, gt);
+  const auto pairs = swslam::test::pairUp(est, gt);
   const auto segments = swslam::eval::distancePairs(pairs, 1.0);
   double sum_t = 0, sum_r = 0;
   for (const auto& [i, j] : segments)
@@ -79,7 +68,7 @@ TEST(EvalRpe, RigidOffsetIsZeroAndScaleErrorIsItsClosedForm)
 {
   const auto gt = swslam::test::wanderingPath(100, 0, 2);
   const auto moved = swslam::test::transformed(gt, {-3, 8, -1.0});
-  const auto pairs = pairUp(moved, gt);
+  const auto pairs = swslam::test::pairUp(moved, gt);
   const auto r = swslam::eval::relativePoseError(pairs, swslam::eval::consecutivePairs(100));
   EXPECT_NEAR(r.translation.max, 0, 1e-9);
   EXPECT_NEAR(r.rotation.max, 0, 1e-9);
@@ -92,7 +81,7 @@ TEST(EvalRpe, RigidOffsetIsZeroAndScaleErrorIsItsClosedForm)
     line.push_back({0.1 * k, {0.5 * k, 0, 0}});
     stretched.push_back({0.1 * k, {0.55 * k, 0, 0}});
   }
-  const auto lp = pairUp(stretched, line);
+  const auto lp = swslam::test::pairUp(stretched, line);
   const auto step = swslam::eval::relativePoseError(lp, swslam::eval::consecutivePairs(20));
   EXPECT_NEAR(step.translation.rmse, 0.05, 1e-12);
   const auto seg = swslam::eval::relativePoseError(lp, swslam::eval::distancePairs(lp, 1.0));

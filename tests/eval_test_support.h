@@ -1,7 +1,7 @@
 #pragma once
 // Small synthetic trajectories and slow, obviously-correct SE(2) algebra for the eval tests.
 
-#include <swslam/tum_io.h>
+#include <swslam/eval/association.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -47,6 +47,16 @@ inline std::vector<StampedPose> transformed(const std::vector<StampedPose>& path
 {
   auto out = path;
   for (auto& p : out) p.pose = T + p.pose;
+  return out;
+}
+
+/** Pose i of `est` paired with pose i of `gt` (same lengths), without any association. */
+inline std::vector<eval::PosePair> pairUp(const std::vector<StampedPose>& est,
+                                          const std::vector<StampedPose>& gt)
+{
+  std::vector<eval::PosePair> out;
+  for (size_t i = 0; i < gt.size(); i++)
+    out.push_back({est[i].t, gt[i].t, est[i].pose, gt[i].pose});
   return out;
 }
 

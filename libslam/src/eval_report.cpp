@@ -124,21 +124,21 @@ std::string formatRelationsResult(const RelationsResult& r)
   std::string s;
   s += line("relations", r.used + r.unmatched) + line("used", r.used) +
        line("unmatched", r.unmatched) + line("nonplanar", r.nonplanar);
-  s += line("trans_abs_mean", r.translation.mean) + line("trans_abs_std", r.translation.std) +
-       line("trans_sq_mean", r.translation_sq.mean) + line("trans_sq_std", r.translation_sq.std);
+  s += line("trans_abs_mean", r.translation.mean) + line("trans_abs_std", r.translation.stddev) +
+       line("trans_sq_mean", r.translation_sq.mean) + line("trans_sq_std", r.translation_sq.stddev);
   s += line("rot_abs_mean_deg", RAD2DEG(r.rotation.mean)) +
-       line("rot_abs_std_deg", RAD2DEG(r.rotation.std)) +
+       line("rot_abs_std_deg", RAD2DEG(r.rotation.stddev)) +
        line("rot_sq_mean_deg2", d2 * r.rotation_sq.mean) +
-       line("rot_sq_std_deg2", d2 * r.rotation_sq.std);
+       line("rot_sq_std_deg2", d2 * r.rotation_sq.stddev);
   char buf[512];
   std::snprintf(buf, sizeof(buf),
                 "# %zu of %zu relations used (%zu unmatched, %zu non-planar projected)\n"
                 "# translational error %.4f +/- %.4f m (squared %.5f +/- %.5f m^2)\n"
                 "# rotational error %.3f +/- %.3f deg (squared %.4f +/- %.4f deg^2)\n",
                 r.used, r.used + r.unmatched, r.unmatched, r.nonplanar, r.translation.mean,
-                r.translation.std, r.translation_sq.mean, r.translation_sq.std,
-                RAD2DEG(r.rotation.mean), RAD2DEG(r.rotation.std), d2 * r.rotation_sq.mean,
-                d2 * r.rotation_sq.std);
+                r.translation.stddev, r.translation_sq.mean, r.translation_sq.stddev,
+                RAD2DEG(r.rotation.mean), RAD2DEG(r.rotation.stddev), d2 * r.rotation_sq.mean,
+                d2 * r.rotation_sq.stddev);
   return s + buf;
 }
 

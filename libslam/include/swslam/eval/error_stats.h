@@ -9,7 +9,7 @@ namespace swslam::eval
 struct ErrorStats
 {
   size_t n = 0;
-  double rmse = 0, mean = 0, std = 0, median = 0, max = 0;  ///< NaN when n == 0
+  double rmse = 0, mean = 0, stddev = 0, median = 0, max = 0;  ///< NaN when n == 0
 };
 
 /** RMSE, mean, sample standard deviation (n - 1; 0 for a single value), median (mean of
