@@ -31,6 +31,7 @@ TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
   const SystemParams defaults;
   mrpt::config::CConfigFileMemory written;
   defaults.plicp.saveToConfigFile(written, "plicp");
+  defaults.tracking.saveToConfigFile(written, "tracking");
   defaults.carmen.saveToConfigFile(written, "carmen");
   defaults.graph_optimizer.saveToConfigFile(written, "graph_optimizer");
   for (const auto& section : SystemParams::sections())

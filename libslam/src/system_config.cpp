@@ -11,7 +11,7 @@ namespace swslam
 {
 const std::vector<std::string>& SystemParams::sections()
 {
-  static const std::vector<std::string> names = {"plicp", "carmen", "graph_optimizer"};
+  static const std::vector<std::string> names = {"plicp", "tracking", "carmen", "graph_optimizer"};
   return names;
 }
 
@@ -20,6 +20,7 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg)
   checkKnownSections(cfg, SystemParams::sections());
   SystemParams p;
   p.plicp = loadStrict<PlicpParams>(cfg, "plicp");
+  p.tracking = loadStrict<TrackingParams>(cfg, "tracking");
   p.carmen = loadStrict<CarmenParams>(cfg, "carmen");
   p.graph_optimizer = loadStrict<GraphOptimizerParams>(cfg, "graph_optimizer");
   return p;

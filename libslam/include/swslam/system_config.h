@@ -5,6 +5,7 @@
 #include <swslam/carmen_log.h>
 #include <swslam/graph_optimizer_params.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/tracking/tracking_params.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -16,6 +17,7 @@ namespace swslam
 struct SystemParams
 {
   PlicpParams plicp;    ///< [plicp]
+  TrackingParams tracking;  ///< [tracking]
   CarmenParams carmen;  ///< [carmen]
   GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
 
