@@ -1,13 +1,13 @@
 // Benchmark of the pose-graph optimizer: ours vs MRPT's optimize_graph_spa_levmarq vs Ceres
 // on the same graphs (time, final chi2 with the original information, error vs truth),
 // the sliding-window update cost against graph size, and robust vs L2 under wrong loops.
+#include "cli.h"
 #include "bench_graph_solvers.h"
 
 #include <swslam/graph_io.h>
 #include <swslam/sliding_window.h>
 #include <swslam/synthetic_graph.h>
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/CTicTac.h>
 
 #include <algorithm>
@@ -93,7 +93,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> datasets("", "mrpt-datasets", "MRPT datasets directory", false,
                                         "/usr/share/mrpt/datasets", "DIR", cmd);
   TCLAP::ValueArg<int> repeats("", "repeats", "timed runs per solver (median)", false, 5, "N", cmd);
-  if (!cmd.parse(argc, argv)) return 1;  // bad command line (message printed) or --help
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
     std::vector<BenchGraph> graphs;

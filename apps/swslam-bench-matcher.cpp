@@ -1,8 +1,8 @@
 // Benchmark: PLICP vs MRPT's CICP (classic, LM) on scan pairs of a log with reference poses.
+#include "cli.h"
 #include <swslam/config_keys.h>
 #include <swslam/matcher_benchmark.h>
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 
 #include <iostream>
@@ -16,7 +16,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] section)", false, "", "INI", cmd);
   try
   {
-    cmd.parse(argc, argv);
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     swslam::PlicpParams params;
     if (!config.getValue().empty())
       params = swslam::loadStrict<swslam::PlicpParams>(mrpt::config::CConfigFile(config.getValue()), "plicp");

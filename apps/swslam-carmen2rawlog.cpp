@@ -1,7 +1,7 @@
 // swslam-carmen2rawlog: CARMEN log (plain or .gz) -> observation-only MRPT rawlog, keeping
 // each line's own timestamp, plus the reference poses as a TUM file. See doc/carmen.md.
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include "cli.h"
 #include <swslam/carmen2rawlog.h>
 
 #include <filesystem>
@@ -29,7 +29,7 @@ int main(int argc, char** argv)
                             "Make each stream's timestamps strictly increasing", cmd);
     TCLAP::SwitchArg overwrite("w", "overwrite", "Overwrite existing output files", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "Print no warnings, only the summary", cmd);
-    cmd.parse(argc, argv);
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
     for (const auto& path : {out.getValue(), gt.getValue()})
       if (!path.empty() && std::filesystem::exists(path) && !overwrite.getValue())

@@ -2,7 +2,7 @@
 //   swslam-eval ate EST.tum GT.tum        ATE after SE(2) alignment, RPE per pose and per metre
 //   swslam-eval relations EST.tum F.relations   Kuemmerle et al. relation-based metric
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include "cli.h"
 #include <swslam/eval/report.h>
 
 #include <iostream>
@@ -26,7 +26,7 @@ int main(int argc, char** argv)
                                    false, 0.01, "seconds", cmd);
     TCLAP::ValueArg<double> segment("", "segment", "RPE segment length along the ground truth"
                                     " (default 1)", false, 1.0, "metres", cmd);
-    cmd.parse(argc, argv);
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     if (!(max_dt.getValue() >= 0)) throw std::runtime_error("--max-dt must be >= 0");
     if (!(segment.getValue() > 0)) throw std::runtime_error("--segment must be > 0");
 

@@ -1,10 +1,10 @@
 // Optimizes a whole pose-graph file (MRPT .graph, g2o or TORO) with the robust
 // Levenberg-Marquardt optimizer and writes the result in g2o form.
+#include "cli.h"
 #include <swslam/config_keys.h>
 #include <swslam/graph_io.h>
 #include <swslam/sliding_window.h>
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 
 #include <cstdio>
@@ -24,7 +24,7 @@ int main(int argc, char** argv)
                                        false, "", "A", cmd);
     TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
     TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
-    if (!cmd.parse(argc, argv)) return 1;  // bad command line (message printed) or --help
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
     swslam::GraphOptimizerParams params;
     if (config.isSet())

@@ -1,9 +1,9 @@
 // swslam-sim: generates a natural-environment dataset (rawlog, ground truth, world
 // picture) from a scenario file. See doc/simulator.md.
+#include "cli.h"
 #include <swslam/sim_scenario.h>
 #include <swslam/simulator.h>
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <exception>
 #include <iostream>
@@ -18,7 +18,7 @@ int main(int argc, char** argv)
   TCLAP::SwitchArg quiet("q", "quiet", "Do not print the summary", cmd);
   try
   {
-    cmd.parse(argc, argv);
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     const auto sc = swslam::sim::loadScenario(scenario.getValue());
     const auto summary = swslam::sim::runSimulation(sc, output.getValue());
     if (!quiet.getValue()) std::cout << swslam::sim::formatSummary(summary);
