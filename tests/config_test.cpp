@@ -32,6 +32,7 @@ TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
   mrpt::config::CConfigFileMemory written;
   defaults.plicp.saveToConfigFile(written, "plicp");
   defaults.carmen.saveToConfigFile(written, "carmen");
+  defaults.map.saveToConfigFile(written, "map");
   for (const auto& section : SystemParams::sections())
   {
     std::vector<std::string> keys;

@@ -11,7 +11,7 @@ namespace swslam
 {
 const std::vector<std::string>& SystemParams::sections()
 {
-  static const std::vector<std::string> names = {"plicp", "carmen"};
+  static const std::vector<std::string> names = {"plicp", "carmen", "map"};
   return names;
 }
 
@@ -21,6 +21,7 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg)
   SystemParams p;
   p.plicp = loadStrict<PlicpParams>(cfg, "plicp");
   p.carmen = loadStrict<CarmenParams>(cfg, "carmen");
+  p.map = loadStrict<MapParams>(cfg, "map");
   return p;
 }
 

@@ -3,6 +3,7 @@
 // section per module, strictly (unknown sections and keys are errors naming them).
 
 #include <swslam/carmen_log.h>
+#include <swslam/map/map_params.h>
 #include <swslam/plicp/plicp.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -16,6 +17,7 @@ struct SystemParams
 {
   PlicpParams plicp;    ///< [plicp]
   CarmenParams carmen;  ///< [carmen]
+  MapParams map;        ///< [map]
 
   /** Section names, in file order. */
   static const std::vector<std::string>& sections();
