@@ -7,15 +7,26 @@
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
 namespace swslam
 {
+namespace
+{
+/** The shortest decimal that reads back as the same float (0.1f is "0.1"). */
+std::string shortest(float v)
+{
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, r.ptr);
+}
+}  // namespace
+
 void writeGridmap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
 {
   writeAtomically(path, [&](const std::string& tmp) {
@@ -28,11 +39,13 @@ void writeGridmap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string
 
 mrpt::maps::COccupancyGridMap2D readGridmap(const std::string& path)
 {
-  mrpt::io::CFileGZInputStream in;
-  if (!in.open(path)) throw std::runtime_error("cannot open grid map '" + path + "'");
+  if (!std::filesystem::is_regular_file(path))
+    throw std::runtime_error("grid map '" + path + "' does not exist");
   mrpt::maps::COccupancyGridMap2D grid;
   try
   {
+    mrpt::io::CFileGZInputStream in;
+    if (!in.open(path)) throw std::runtime_error("cannot open it");
     mrpt::serialization::archiveFrom(in) >> grid;
   }
   catch (const std::exception& e)
@@ -46,7 +59,7 @@ void writeMapPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string&
 {
   writeAtomically(path, [&](const std::string& tmp) {
     mrpt::img::CImage img;
-    grid.getAsImage(img, /*verticalFlip=*/true);  // row 0 = largest y: north up
+    grid.getAsImage(img, /*verticalFlip=*/false);  // MRPT puts the largest y in row 0
     if (!img.saveToFile(tmp)) throw std::runtime_error("cannot save image '" + tmp + "'");
   });
 }
@@ -75,10 +88,9 @@ void writeRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string&
   writeTextAtomically(pgm.string(), image);
 
   std::ostringstream y;
-  y << std::setprecision(9);
   y << "image: " << pgm.filename().string() << "\n"
-    << "resolution: " << grid.getResolution() << "\n"
-    << "origin: [" << grid.getXMin() << ", " << grid.getYMin() << ", 0.0]\n"
+    << "resolution: " << shortest(grid.getResolution()) << "\n"
+    << "origin: [" << shortest(grid.getXMin()) << ", " << shortest(grid.getYMin()) << ", 0.0]\n"
     << "negate: 0\n"
     << "occupied_thresh: " << thresholds.occupied_thresh << "\n"
     << "free_thresh: " << thresholds.free_thresh << "\n";

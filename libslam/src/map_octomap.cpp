@@ -4,6 +4,7 @@
 
 #include <octomap/OcTree.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace swslam
@@ -30,7 +31,8 @@ size_t countOccupied(const mrpt::maps::COccupancyGridMap2D& grid, double occupie
 size_t writeOctomap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path,
                     double occupied_thresh)
 {
-  const double res = grid.getResolution();
+  // MRPT keeps the resolution as a float (0.1f = 0.100000001): give OctoMap the decimal.
+  const double res = std::round(double(grid.getResolution()) * 1e7) / 1e7;
   octomap::OcTree tree(res);
   size_t n = 0;
   // The grid's cells are aligned on multiples of the resolution, as OctoMap's voxels:
