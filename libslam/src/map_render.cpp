@@ -5,8 +5,8 @@
 #include <mrpt/img/CImage.h>
 #include <mrpt/opengl/CFBORender.h>
 #include <mrpt/opengl/COpenGLScene.h>
-#include <mrpt/opengl/CSetOfLines.h>
-#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CSetOfTriangles.h>
+#include <mrpt/opengl/CTexturedPlane.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -44,12 +44,32 @@ Extent observedExtent(const mrpt::maps::COccupancyGridMap2D& grid, const RenderI
   return e;
 }
 
-mrpt::opengl::CSetOfLines::Ptr lines(float width, uint8_t r, uint8_t g, uint8_t b)
+using Segment = std::pair<mrpt::math::TPoint2D, mrpt::math::TPoint2D>;
+
+/** Segments drawn as flat ribbons `width` [m] wide at height z: GL lines are one pixel at
+ * most in a core-profile context, and too faint to see. */
+mrpt::opengl::CSetOfTriangles::Ptr ribbons(const std::vector<Segment>& segments, double width,
+                                           double z, const mrpt::img::TColor& color)
 {
-  auto l = mrpt::opengl::CSetOfLines::Create();
-  l->setLineWidth(width);
-  l->setColor_u8(r, g, b);
-  return l;
+  auto obj = mrpt::opengl::CSetOfTriangles::Create();
+  for (const auto& [p0, p1] : segments)
+  {
+    const double len = (p1 - p0).norm();
+    if (len <= 0) continue;
+    const double nx = -(p1.y - p0.y) / len * 0.5 * width, ny = (p1.x - p0.x) / len * 0.5 * width;
+    auto at = [&](const mrpt::math::TPoint2D& p, double s) {
+      return mrpt::math::TPoint3Df(static_cast<float>(p.x + s * nx), static_cast<float>(p.y + s * ny),
+                                   static_cast<float>(z));
+    };
+    // Counter-clockwise seen from above: right side of p0, of p1, left side of p1, of p0.
+    const auto a = at(p0, -1), b = at(p1, -1), c = at(p1, +1), d = at(p0, +1);
+    for (auto t : {mrpt::opengl::TTriangle(a, b, c), mrpt::opengl::TTriangle(a, c, d)})
+    {
+      for (auto& v : t.vertices) v.setColor(color);
+      obj->insertTriangle(t);
+    }
+  }
+  return obj;
 }
 }  // namespace
 
@@ -66,32 +86,39 @@ void renderMap(const mrpt::maps::COccupancyGridMap2D& grid, const RenderInput& i
 
   mrpt::opengl::COpenGLScene scene;
   scene.getViewport()->setCustomBackgroundColor(mrpt::img::TColorf(0.55f, 0.55f, 0.55f));
-  auto map_obj = mrpt::opengl::CSetOfObjects::Create();
-  grid.getVisualizationInto(*map_obj);
+  // The grid as an opaque texture (MRPT's own visualization makes unknown cells translucent,
+  // and translucent planes are drawn over the lines).
+  mrpt::img::CImage texture;
+  grid.getAsImage(texture, /*verticalFlip=*/true, /*forceRGB=*/true);
+  auto map_obj = mrpt::opengl::CTexturedPlane::Create(grid.getXMin(), grid.getXMax(),
+                                                      grid.getYMin(), grid.getYMax());
+  map_obj->assignImage(std::move(texture));
   scene.insert(map_obj);
-
-  const double res = grid.getResolution();
-  auto edges = lines(1.5f, 40, 90, 230);
-  for (const auto& [a, b] : input.edges)
-    edges->appendLine(input.nodes[a].x(), input.nodes[a].y(), 0.02, input.nodes[b].x(),
-                      input.nodes[b].y(), 0.02);
-  scene.insert(edges);
-  auto path_obj = lines(2.5f, 230, 30, 30);
-  for (size_t i = 1; i < input.trajectory.size(); i++)
-    path_obj->appendLine(input.trajectory[i - 1].x(), input.trajectory[i - 1].y(), 0.04,
-                         input.trajectory[i].x(), input.trajectory[i].y(), 0.04);
-  scene.insert(path_obj);
 
   // Orthographic top view, north up, framing the observed area with a small border.
   const Extent e = observedExtent(grid, input);
   const double aspect = double(input.width) / input.height;
-  const double span = std::max({e.x1 - e.x0, (e.y1 - e.y0) * aspect, 10 * res}) * 1.05;
+  const double span = std::max({e.x1 - e.x0, (e.y1 - e.y0) * aspect, 10.0 * grid.getResolution()}) * 1.05;
+  // Edges 1.5 px and the trajectory 2.5 px wide, well above the map (between it and the
+  // eye): the orthographic depth range is wide, and ribbons close to the map plane lose
+  // the depth test to it.
+  const double pixel = span / input.width;
+  // MRPT's orthographic view spans zoom * aspect / 2 horizontally.
+  const double zoom = 2 * span / aspect;
+  std::vector<Segment> edge_segments, path_segments;
+  for (const auto& [a, b] : input.edges)
+    edge_segments.emplace_back(input.nodes[a].translation(), input.nodes[b].translation());
+  for (size_t i = 1; i < input.trajectory.size(); i++)
+    path_segments.emplace_back(input.trajectory[i - 1].translation(), input.trajectory[i].translation());
+  scene.insert(ribbons(edge_segments, 1.5 * pixel, 0.15 * zoom, mrpt::img::TColor(40, 90, 230)));
+  scene.insert(ribbons(path_segments, 2.5 * pixel, 0.3 * zoom, mrpt::img::TColor(230, 30, 30)));
+
   mrpt::opengl::CCamera cam;
   cam.setOrthogonal(true);
   cam.setPointingAt(static_cast<float>(0.5 * (e.x0 + e.x1)), static_cast<float>(0.5 * (e.y0 + e.y1)), 0);
   cam.setAzimuthDegrees(-90);
   cam.setElevationDegrees(90);
-  cam.setZoomDistance(static_cast<float>(span / aspect));
+  cam.setZoomDistance(static_cast<float>(zoom));
 
   mrpt::img::CImage img;
   try
