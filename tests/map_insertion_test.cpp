@@ -16,14 +16,6 @@ using mrpt::poses::CPose2D;
 
 namespace
 {
-MapParams testParams()
-{
-  MapParams p;
-  p.resolution = 0.1;
-  p.initial_half_size = 10;
-  return p;
-}
-
 /** p(occupied) of the cell containing (x, y). */
 double occupancy(const mrpt::maps::COccupancyGridMap2D& g, double x, double y)
 {
@@ -34,7 +26,7 @@ double occupancy(const mrpt::maps::COccupancyGridMap2D& g, double x, double y)
 TEST(MapInsertion, RayCellsBecomeFreeAndItsEndOccupied)
 {
   // Three rays over 180 deg: -90, 0, +90 deg. The middle one hits at 5 m along +x.
-  MapBuilder map(testParams());
+  MapBuilder map(test::smallMapParams(10));
   map.insert(0, test::makeScan({3.0, 5.0, 4.0}, M_PI), CPose2D(0.05, 0.05, 0));
   const auto g = map.snapshot();
   for (double x = 0.25; x < 4.9; x += 0.1) EXPECT_LT(occupancy(g, x, 0.05), 0.5) << x;
@@ -45,9 +37,22 @@ TEST(MapInsertion, RayCellsBecomeFreeAndItsEndOccupied)
   EXPECT_DOUBLE_EQ(occupancy(g, -3, -3), 0.5);
 }
 
+TEST(MapInsertion, LeftToRightScansStartAtTheLeft)
+{
+  auto scan = test::makeScan({3.0, 5.0, 4.0}, M_PI);
+  scan.rightToLeft = false;  // ray 0 at +90 deg, ray 2 at -90 deg
+  MapBuilder map(test::smallMapParams(10));
+  map.insert(0, scan, CPose2D(0.05, 0.05, 0));
+  const auto g = map.snapshot();
+  EXPECT_GT(occupancy(g, 0.05, 3.05), 0.5);
+  EXPECT_GT(occupancy(g, 5.05, 0.05), 0.5);
+  EXPECT_GT(occupancy(g, 0.05, -3.95), 0.5);
+  EXPECT_DOUBLE_EQ(occupancy(g, 0.05, 4.05), 0.5);
+}
+
 TEST(MapInsertion, RepeatedHitsConvergeToOccupiedAndCrossedCellsToFree)
 {
-  MapBuilder map(testParams());
+  MapBuilder map(test::smallMapParams(10));
   const auto scan = test::makeScan({2.0, 2.0, 2.0}, 0.02);
   double last_hit = 0.5, last_free = 0.5;
   for (MapNodeId k = 0; k < 30; k++)
@@ -65,7 +70,7 @@ TEST(MapInsertion, RepeatedHitsConvergeToOccupiedAndCrossedCellsToFree)
 
 TEST(MapInsertion, ContributionsAddUpInLogOddsAndClampOnlyInTheMirror)
 {
-  const auto p = testParams();
+  const auto p = test::smallMapParams(10);
   const auto c = computeContribution(sanitizedScan(test::makeScan({2.0, 2.0, 2.0}, 0.02), p),
                                      CPose2D(0.05, 0.05, 0), p);
   ASSERT_FALSE(c.runs.empty());
@@ -92,7 +97,7 @@ TEST(MapInsertion, ContributionsAddUpInLogOddsAndClampOnlyInTheMirror)
 TEST(MapInsertion, OneNodeEqualsMrptInsertingIntoAnEmptyGrid)
 {
   // The contribution machinery adds nothing of its own: one node gives MRPT's own result.
-  const auto p = testParams();
+  const auto p = test::smallMapParams(10);
   std::mt19937 rng(3);
   const CPose2D pose(1.23, -0.4, 0.3);
   const auto obs = test::simulateObservation(test::roomWorld(), pose, 361, M_PI, 25, 0.01, rng);
@@ -111,7 +116,7 @@ TEST(MapInsertion, OneNodeEqualsMrptInsertingIntoAnEmptyGrid)
 
 TEST(MapInsertion, BadInputIsAClearError)
 {
-  MapBuilder map(testParams());
+  MapBuilder map(test::smallMapParams(10));
   auto one_ray = test::makeScan({1.0}, 0.1);
   EXPECT_THROW(map.insert(0, one_ray, CPose2D()), std::invalid_argument);
   auto tilted = test::makeScan({1.0, 1.0, 1.0}, 1.0);
@@ -131,7 +136,7 @@ TEST(MapInsertion, BadInputIsAClearError)
 
 TEST(MapInsertion, GridGrowsToHoldFarScans)
 {
-  auto p = testParams();
+  auto p = test::smallMapParams(10);
   p.initial_half_size = 2;
   p.grow_margin = 1;
   MapBuilder map(p);

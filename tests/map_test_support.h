@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the map tests: hand-made scans and cell-by-cell grid comparison.
 
+#include <swslam/map/map_params.h>
+
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
@@ -9,6 +11,15 @@
 
 namespace swslam::test
 {
+/** Map parameters for small synthetic worlds: 0.1 m cells, a grid of +-half_size m. */
+inline MapParams smallMapParams(double half_size)
+{
+  MapParams p;
+  p.resolution = 0.1;
+  p.initial_half_size = half_size;
+  return p;
+}
+
 /** A scan of `ranges.size()` rays over `aperture`; negative ranges are "no return". */
 inline mrpt::obs::CObservation2DRangeScan makeScan(const std::vector<double>& ranges,
                                                    double aperture, double max_range = 30)

@@ -17,9 +17,7 @@ namespace
 {
 MapParams params()
 {
-  MapParams p;
-  p.resolution = 0.1;
-  p.initial_half_size = 5;
+  auto p = test::smallMapParams(5);
   p.grow_margin = 2;
   return p;
 }

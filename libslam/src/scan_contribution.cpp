@@ -1,5 +1,7 @@
 #include "swslam/map/scan_contribution.h"
 
+#include "swslam/scan.h"
+
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -18,15 +20,12 @@ constexpr int kScratchMarginCells = 20;
 mrpt::obs::CObservation2DRangeScan sanitizedScan(const mrpt::obs::CObservation2DRangeScan& obs,
                                                  const MapParams& params)
 {
-  const size_t n = obs.getScanSize();
-  const std::string who = "map: scan '" + obs.sensorLabel + "' ";
-  if (n < 2) throw std::invalid_argument(who + "has " + std::to_string(n) + " rays (need >= 2)");
-  if (!(obs.aperture > 0) || obs.aperture > 2 * M_PI + 1e-6)
-    throw std::invalid_argument(who + "has aperture " + std::to_string(obs.aperture) +
-                                " rad, outside (0, 2*pi]");
+  // Same geometry checks and the same valid rays as the scan matcher.
+  const Scan valid = scanFromObservation(obs);
   if (!obs.isPlanarScan(params.horizontal_tolerance))
-    throw std::invalid_argument(who + "is not horizontal (sensor pose " +
+    throw std::invalid_argument("map: scan '" + obs.sensorLabel + "' is not horizontal (sensor pose " +
                                 obs.sensorPose.asString() + ")");
+  const size_t n = obs.getScanSize();
   mrpt::obs::CObservation2DRangeScan out = obs;
   // MRPT 2.5's grid insertion steps its rays by aperture/N from -aperture/2, while the scan's
   // rays are aperture/(N-1) apart (CObservation2DRangeScan, CSinCosLookUpTableFor2DScans):
@@ -38,13 +37,9 @@ mrpt::obs::CObservation2DRangeScan sanitizedScan(const mrpt::obs::CObservation2D
   out.aperture = static_cast<float>(widened);
   out.sensorPose.setYawPitchRoll(obs.sensorPose.yaw() + turn, obs.sensorPose.pitch(),
                                  obs.sensorPose.roll());
-  for (size_t i = 0; i < n; i++)
-  {
-    const float r = out.getScanRange(i);
-    // A reading at the sensor's max range is "no return", not an obstacle there.
-    if (out.getScanRangeValidity(i) && !(std::isfinite(r) && r > 0 && r < out.maxRange))
-      out.setScanRangeValidity(i, false);
-  }
+  // A reading flagged valid but NaN, non-positive or at the max range is "no return".
+  for (size_t i = 0; i < n; i++) out.setScanRangeValidity(i, false);
+  for (int i : valid.beam_index) out.setScanRangeValidity(static_cast<size_t>(i), true);
   return out;
 }
 
