@@ -10,8 +10,11 @@ bin=build/apps
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+# One core, as the figures are quoted (taskset from util-linux, when present).
+pin=()
+if command -v taskset > /dev/null; then pin=(taskset -c 0); fi
 run() {  # rawlog gt
-  "$bin/swslam-bench-matcher" --input "$1" --ground-truth "$2" --config config/default.ini
+  "${pin[@]}" "$bin/swslam-bench-matcher" --input "$1" --ground-truth "$2" --config config/default.ini
 }
 run datasets/lake-short/lake-short.rawlog datasets/lake-short/lake-short.gt.tum
 shopt -s nullglob

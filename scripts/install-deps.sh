@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config
-  libeigen3-dev libgtest-dev liboctomap-dev
+  libeigen3-dev libgtest-dev liboctomap-dev libsuitesparse-dev
   libmrpt-obs-dev libmrpt-slam-dev libmrpt-maps-dev libmrpt-graphs-dev
   libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
   mrpt-common

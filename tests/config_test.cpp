@@ -31,7 +31,9 @@ TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
   const SystemParams defaults;
   mrpt::config::CConfigFileMemory written;
   defaults.plicp.saveToConfigFile(written, "plicp");
+  defaults.tracking.saveToConfigFile(written, "tracking");
   defaults.carmen.saveToConfigFile(written, "carmen");
+  defaults.graph_optimizer.saveToConfigFile(written, "graph_optimizer");
   defaults.map.saveToConfigFile(written, "map");
   for (const auto& section : SystemParams::sections())
   {

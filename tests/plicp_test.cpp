@@ -130,3 +130,20 @@ TEST(Plicp, AWildResultIsReportedAsDiverged)
       c.world, c.ref_pose + c.motion, c.beams, c.fov, c.max_range, 0.03, rng));
   EXPECT_EQ(matchScans(ref, cur, {}, p).status, MatchStatus::Diverged);
 }
+
+TEST(Plicp, RotatedRetriesRecoverALargeTurnFromIdentity)
+{
+  // A 55 deg turn on the spot in clutter: too far for one local run from identity.
+  const Case c{test::clutteredWorld(4), {2, -4, 0.4}, {0.1, 0.05, 55 * M_PI / 180}, 361, M_PI, 30};
+  std::mt19937 rng(6);
+  const ReferenceScan ref(scanFromObservation(
+      test::simulateObservation(c.world, c.ref_pose, c.beams, c.fov, c.max_range, 0.03, rng)));
+  const auto cur = scanFromObservation(test::simulateObservation(
+      c.world, c.ref_pose + c.motion, c.beams, c.fov, c.max_range, 0.03, rng));
+  PlicpParams no_retry;
+  no_retry.retry_rotations = 0;
+  const auto single = matchScans(ref, cur, {}, no_retry);
+  EXPECT_FALSE(single.ok() && std::abs(single.pose.phi() - c.motion.phi()) < 0.01)
+      << "this case should be out of reach of a single run";
+  expectNear(matchScans(ref, cur, {}, PlicpParams()), c.motion, 0.03, 0.3);
+}

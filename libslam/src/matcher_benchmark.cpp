@@ -1,6 +1,7 @@
 #include "swslam/matcher_benchmark.h"
 
 #include "swslam/rawlog_reader.h"
+#include "swslam/tracking/sensor_frame.h"
 
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/slam/CICP.h>
@@ -44,8 +45,8 @@ MatcherFn plicpMatcher(const PlicpParams& params)
     // PLICP works in the sensor frame: convert the vehicle-frame guess and result.
     const CPose2D s(a.sensorPose);
     const ReferenceScan ref(scanFromObservation(a), params);
-    const MatchResult r = matchScans(ref, scanFromObservation(b), -s + guess + s, params);
-    return Estimate{s + r.pose - s, r.iterations, r.ok()};
+    const MatchResult r = matchScans(ref, scanFromObservation(b), sensorMotion(s, guess), params);
+    return Estimate{vehicleMotion(s, r.pose), r.iterations, r.ok()};
   };
 }
 

@@ -3,13 +3,13 @@
 #include "swslam/plicp/closed_form.h"
 #include "swslam/plicp/covariance.h"
 #include "swslam/plicp/outliers.h"
+#include "swslam/plicp/run.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swslam
 {
-using plicp::Correspondence;
-
 const char* toString(MatchStatus s)
 {
   switch (s)
@@ -25,34 +25,6 @@ const char* toString(MatchStatus s)
 
 namespace
 {
-std::vector<Eigen::Vector2d> transformed(const Scan& s, const Eigen::Vector3d& x)
-{
-  const double c = std::cos(x.z()), sn = std::sin(x.z());
-  std::vector<Eigen::Vector2d> out(s.size());
-  for (size_t i = 0; i < s.size(); i++)
-  {
-    const auto& p = s.points[i];
-    out[i] = {c * p.x() - sn * p.y() + x.x(), sn * p.x() + c * p.y() + x.y()};
-  }
-  return out;
-}
-
-Eigen::Vector2d normalOf(const Scan& ref, const Correspondence& k)
-{
-  const Eigen::Vector2d e = (ref.points[k.j1] - ref.points[k.j2]).normalized();
-  return {-e.y(), e.x()};
-}
-
-/** Point-to-line distance of each correspondence (eq. 1's residual). */
-std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref,
-                               const std::vector<Correspondence>& cs)
-{
-  std::vector<double> e(cs.size());
-  for (size_t k = 0; k < cs.size(); k++)
-    e[k] = std::abs(normalOf(ref, cs[k]).dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
-  return e;
-}
-
 std::string sensorMismatch(const Scan& a, const Scan& b)
 {
   if (a.sensor_label == b.sensor_label && a.beam_count == b.beam_count &&
@@ -66,30 +38,6 @@ std::string sensorMismatch(const Scan& a, const Scan& b)
          describe(b);
 }
 
-/** Outlier rejection of the correspondences found within `radius` (doubles only at the final
- * radius: while the scans are still far apart many points share a nearest neighbour, and
- * thinning them then shrinks the basin of convergence). */
-std::vector<Correspondence> rejectOutliers(const Scan& ref,
-                                           const std::vector<Eigen::Vector2d>& cur_in_ref,
-                                           std::vector<Correspondence> found, double radius,
-                                           const PlicpParams& params)
-{
-  if (params.remove_doubles && radius <= params.max_correspondence_dist)
-    found = plicp::keepNearestPerReference(found, static_cast<int>(ref.size()));
-  return plicp::trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
-                            params.adaptive_quantile, params.adaptive_mult);
-}
-
-/** Convergence test of a step: the epsilons at the final radius; at a coarse radius only
- * settling is needed (2% of the radius, 0.3 deg), the fine stages refine it. */
-bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& params)
-{
-  const bool coarse = radius > params.max_correspondence_dist;
-  const double eps_xy = coarse ? 0.02 * radius : params.epsilon_xy;
-  const double eps_th = coarse ? 0.005 : params.epsilon_theta;
-  return step.head<2>().norm() < eps_xy && std::abs(step.z()) < eps_th;
-}
-
 MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
 {
   r.status = s;
@@ -97,94 +45,6 @@ MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
   return r;
 }
 }  // namespace
-
-/** The state of one run of PLICP iterations. */
-struct IcpRun
-{
-  Eigen::Vector3d x;
-  std::vector<Correspondence> kept;
-  int iterations = 0;
-  MatchStatus status = MatchStatus::MaxIterations;
-  std::string message;
-};
-
-/** Iterates from run.x with matching radius `radius`, halving it each time the estimate
- * settles, until it settles at max_correspondence_dist (Converged) or max_iterations. Fails
- * with TooFewCorrespondences or Diverged (run.message says why). `first`, if not empty, is
- * the correspondence set at run.x and `radius`, already searched. */
-void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
-             const PlicpParams& params, IcpRun& run, std::vector<Correspondence> first)
-{
-  const Scan& ref = reference.scan;
-  const size_t min_n = static_cast<size_t>(params.min_correspondences);
-  std::vector<Correspondence> previous, before_previous;
-  auto settled = [&]() {
-    if (radius <= params.max_correspondence_dist) return true;
-    radius = std::max(params.max_correspondence_dist, 0.5 * radius);
-    previous.clear();
-    before_previous.clear();
-    return false;
-  };
-  while (run.iterations < params.max_iterations)
-  {
-    run.iterations++;
-    const auto cur_in_ref = transformed(cur, run.x);
-    auto found = run.iterations == 1 && !first.empty()
-                     ? std::move(first)
-                     : plicp::findCorrespondences(ref, reference.index, cur_in_ref, radius);
-    run.kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
-    if (run.kept.size() < min_n)
-    {
-      run.status = MatchStatus::TooFewCorrespondences;
-      run.message = std::to_string(run.kept.size()) + " valid correspondences at iteration " +
-                    std::to_string(run.iterations) + " (need " + std::to_string(min_n) + ")";
-      return;
-    }
-    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
-    if ((run.kept == previous || run.kept == before_previous) && settled())
-    {
-      run.status = MatchStatus::Converged;
-      return;
-    }
-    std::vector<plicp::PointToLine> terms;
-    terms.reserve(run.kept.size());
-    for (const auto& k : run.kept)
-      terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
-    const auto next = plicp::solvePointToLine(terms, run.x);
-    if (!next || !next->allFinite())
-    {
-      run.status = MatchStatus::Diverged;
-      run.message = "closed-form step failed at iteration " + std::to_string(run.iterations);
-      return;
-    }
-    const Eigen::Vector3d step(next->x() - run.x.x(), next->y() - run.x.y(),
-                               std::remainder(next->z() - run.x.z(), 2 * M_PI));
-    run.x = *next;
-    before_previous = std::move(previous);
-    previous = run.kept;
-    if (isSmallStep(step, radius, params) && settled())
-    {
-      run.status = MatchStatus::Converged;
-      return;
-    }
-  }
-  run.status = MatchStatus::MaxIterations;
-}
-
-/** Coarse to fine: when the guess matches few points within the final radius, a wide radius
- * first widens the basin of convergence (it halves each time the estimate settles). Returns
- * the start radius; `probe` gets the correspondences at the final radius if they were searched
- * and the start is fine. */
-double startRadius(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x,
-                   const PlicpParams& params, std::vector<Correspondence>& probe)
-{
-  const double fine = params.max_correspondence_dist;
-  if (params.initial_correspondence_dist <= fine) return fine;
-  probe = plicp::findCorrespondences(reference.scan, reference.index, transformed(cur, x), fine);
-  if (probe.size() >= params.coarse_start_fraction * cur.size()) return fine;
-  probe.clear();
-  return params.initial_correspondence_dist;
-}
 
 MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                        const mrpt::poses::CPose2D& initial_guess, const PlicpParams& params)
@@ -206,11 +66,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                     std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
-  IcpRun run;
-  run.x = x0;
-  std::vector<Correspondence> probe;
-  const double radius = startRadius(reference, cur, x0, params, probe);
-  iterate(reference, cur, radius, params, run, std::move(probe));
+  const plicp::IcpRun run = plicp::runWithRetries(reference, cur, x0, params);
   res.iterations = run.iterations;
   res.status = run.status;
   if (!res.ok()) return fail(res, run.status, run.message);
@@ -222,8 +78,8 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
     return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
 
   // Residuals and covariance (eq. 4-10) at the final estimate.
-  const auto cur_in_ref = transformed(cur, x);
-  const auto errors = lineErrors(ref, cur_in_ref, kept);
+  const auto cur_in_ref = plicp::transformed(cur, x);
+  const auto errors = plicp::lineErrors(ref, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
   for (double e : errors) res.sum_sq_residuals += e * e;

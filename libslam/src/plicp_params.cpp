@@ -15,6 +15,11 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   MRPT_LOAD_CONFIG_VAR_CS(max_correspondence_dist, double);
   MRPT_LOAD_CONFIG_VAR_CS(initial_correspondence_dist, double);
   MRPT_LOAD_CONFIG_VAR_CS(coarse_start_fraction, double);
+  MRPT_LOAD_CONFIG_VAR_CS(retry_below_inlier_fraction, double);
+  MRPT_LOAD_CONFIG_VAR_CS(retry_rotations, int);
+  retry_rotation_step = mrpt::DEG2RAD(
+      c.read_double(s, "retry_rotation_step_DEG", mrpt::RAD2DEG(retry_rotation_step)));
+  MRPT_LOAD_CONFIG_VAR_CS(retry_min_gain, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_segment_length, double);
   MRPT_LOAD_CONFIG_VAR_CS(remove_doubles, bool);
   MRPT_LOAD_CONFIG_VAR_CS(trim_keep_fraction, double);
@@ -34,6 +39,11 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   require(max_correspondence_dist > 0, "max_correspondence_dist must be > 0");
   require(initial_correspondence_dist >= max_correspondence_dist,
           "initial_correspondence_dist must be >= max_correspondence_dist");
+  require(retry_below_inlier_fraction >= 0 && retry_below_inlier_fraction <= 1,
+          "retry_below_inlier_fraction must be in [0, 1]");
+  require(retry_rotations >= 0, "retry_rotations must be >= 0");
+  require(retry_rotation_step > 0, "retry_rotation_step_DEG must be > 0");
+  require(retry_min_gain >= 1, "retry_min_gain must be >= 1");
   require(coarse_start_fraction >= 0 && coarse_start_fraction <= 1, "coarse_start_fraction must be in [0, 1]");
   require(min_segment_length >= 0, "min_segment_length must be >= 0");
   require(trim_keep_fraction > 0 && trim_keep_fraction <= 1, "trim_keep_fraction must be in (0, 1]");
@@ -51,6 +61,10 @@ void PlicpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("epsilon_theta_DEG", epsilon_theta, "[deg] ...and turns less than this");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_correspondence_dist, "[m] farther point pairs are not matched, once converged");
   MRPT_SAVE_CONFIG_VAR_COMMENT(initial_correspondence_dist, "[m] matching radius of the first iterations (halved as the estimate settles)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(retry_below_inlier_fraction, "Retry from rotated guesses when fewer points end within 3 range_sigma of the reference");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(retry_rotations, "Retries: the guess turned by +-1..k steps...");
+  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("retry_rotation_step_DEG", retry_rotation_step, "[deg] ...of this");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(retry_min_gain, "A retry wins only with this many times the first run's inliers");
   MRPT_SAVE_CONFIG_VAR_COMMENT(coarse_start_fraction, "Start coarse if the guess matches fewer than this fraction of points within max_correspondence_dist");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_segment_length, "[m] shortest reference segment j1-j2 that defines a normal");
   MRPT_SAVE_CONFIG_VAR_COMMENT(remove_doubles, "Keep only the nearest of several points matched to one reference point");

@@ -11,7 +11,8 @@ namespace swslam
 {
 const std::vector<std::string>& SystemParams::sections()
 {
-  static const std::vector<std::string> names = {"plicp", "carmen", "map"};
+  static const std::vector<std::string> names = {"plicp", "tracking", "carmen",
+                                                 "graph_optimizer", "map"};
   return names;
 }
 
@@ -20,7 +21,9 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg)
   checkKnownSections(cfg, SystemParams::sections());
   SystemParams p;
   p.plicp = loadStrict<PlicpParams>(cfg, "plicp");
+  p.tracking = loadStrict<TrackingParams>(cfg, "tracking");
   p.carmen = loadStrict<CarmenParams>(cfg, "carmen");
+  p.graph_optimizer = loadStrict<GraphOptimizerParams>(cfg, "graph_optimizer");
   p.map = loadStrict<MapParams>(cfg, "map");
   return p;
 }

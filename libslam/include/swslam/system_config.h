@@ -3,8 +3,10 @@
 // section per module, strictly (unknown sections and keys are errors naming them).
 
 #include <swslam/carmen_log.h>
+#include <swslam/graph_optimizer_params.h>
 #include <swslam/map/map_params.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/tracking/tracking_params.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -16,7 +18,9 @@ namespace swslam
 struct SystemParams
 {
   PlicpParams plicp;    ///< [plicp]
+  TrackingParams tracking;  ///< [tracking]
   CarmenParams carmen;  ///< [carmen]
+  GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
   MapParams map;        ///< [map]
 
   /** Section names, in file order. */

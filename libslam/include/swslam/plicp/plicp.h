@@ -16,12 +16,16 @@ namespace swslam
 /** Parameters of the matcher, section [plicp]. */
 struct PlicpParams : public mrpt::config::CLoadableOptions
 {
-  int max_iterations = 40;           ///< iteration cap
+  int max_iterations = 40;           ///< iteration cap (per run from one start)
   double epsilon_xy = 5e-4;          ///< [m] stop when the step's translation is below
   double epsilon_theta = 1e-4;       ///< [rad] (ini: epsilon_theta_DEG) and its rotation below
   double max_correspondence_dist = 1.0;  ///< [m] farther point pairs are not matched ...
   double initial_correspondence_dist = 4.0;  ///< [m] ... after a coarse-to-fine start from this
   double coarse_start_fraction = 0.5;  ///< start coarse if the guess matches fewer points than this
+  double retry_below_inlier_fraction = 0.25;  ///< retry from rotated guesses below this inlier fraction
+  int retry_rotations = 3;                ///< retries: the guess turned by +-1..k steps...
+  double retry_rotation_step = 20.0 * M_PI / 180;  ///< [rad] ...of this (ini: retry_rotation_step_DEG)
+  double retry_min_gain = 3.0;            ///< a retry wins only with this many times the inliers
   double min_segment_length = 0.2;   ///< [m] shortest j1-j2 segment defining a normal
   bool remove_doubles = true;        ///< keep one match per reference point (at the final radius)
   double trim_keep_fraction = 0.95;  ///< keep at most this fraction of the best matches

@@ -1,0 +1,59 @@
+// Optimizes a whole pose-graph file (MRPT .graph, g2o or TORO) with the robust
+// Levenberg-Marquardt optimizer and writes the result in g2o form.
+#include <swslam/config_keys.h>
+#include <swslam/graph_io.h>
+#include <swslam/sliding_window.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFile.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    TCLAP::CmdLine cmd("swslam-graph-optimize", ' ', "0.1");
+    TCLAP::ValueArg<std::string> in("i", "input", "input graph (.graph, .g2o, TORO)", true, "", "IN", cmd);
+    TCLAP::ValueArg<std::string> out("o", "output", "output graph (g2o form)", true, "", "OUT", cmd);
+    TCLAP::ValueArg<std::string> config("", "config", "ini file with a [graph_optimizer] section",
+                                        false, "", "INI", cmd);
+    TCLAP::ValueArg<std::string> alpha("", "alpha", "kernel shape in [-inf, 2] (robustified edges)",
+                                       false, "", "A", cmd);
+    TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
+    TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
+    if (!cmd.parse(argc, argv)) return 1;  // bad command line (message printed) or --help
+
+    swslam::GraphOptimizerParams params;
+    if (config.isSet())
+      params = swslam::loadStrict<swslam::GraphOptimizerParams>(
+          mrpt::config::CConfigFile(config.getValue()), "graph_optimizer");
+    if (alpha.isSet()) params.kernel_alpha = std::strtod(alpha.getValue().c_str(), nullptr);
+    if (c.isSet()) params.kernel_c = c.getValue();
+    if (iters.isSet()) params.max_iterations = iters.getValue();
+    params.check();
+
+    swslam::GraphLoadReport load;
+    swslam::PoseGraph graph = swslam::loadGraph(in.getValue(), &load);
+    std::printf("loaded %zu vertices, %zu edges, %zu skipped lines\n", load.vertices, load.edges,
+                load.skipped_lines);
+    for (size_t k = 0; k < load.skipped_lines; ++k)
+      std::printf("  skipped line %zu: %s\n", load.skipped_line_numbers[k], load.skip_reasons[k].c_str());
+
+    const swslam::OptimizationReport r = swslam::optimizeFull(graph, params);
+    std::printf("status: %s (%s)\niterations: %zu\ninitial chi2: %.9g\nfinal chi2: %.9g\n"
+                "active squared residuals: %.9g\ntime: %.3f ms\n",
+                swslam::statusName(r.status), r.message.c_str(), r.iterations, r.initial_chi2,
+                r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
+    if (r.status == swslam::OptimizationStatus::Diverged) return 2;
+    swslam::saveGraph(graph, out.getValue());
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "swslam-graph-optimize: " << e.what() << "\n";
+    return 1;
+  }
+}

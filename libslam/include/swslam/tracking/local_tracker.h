@@ -1,0 +1,96 @@
+#pragma once
+// Local tracking (paper sec. II.C, Fig. 1-2): each scan is matched by PLICP against the
+// latest keyframe, starting from the previous relative pose moved by the expected motion.
+// Past a translation or rotation threshold a new keyframe (graph node) is made; it is
+// connected to the previous node and, densely, to every node within a radius.
+
+#include <swslam/edge_kind.h>
+#include <swslam/plicp/plicp.h>
+#include <swslam/tracking/tracking_params.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace swslam
+{
+/** A graph node made by tracking: its vehicle pose and the scan other scans match against. */
+struct Keyframe
+{
+  size_t id = 0;
+  mrpt::poses::CPose2D pose;  ///< vehicle pose in the map frame (updated by the optimizer)
+  std::shared_ptr<const ReferenceScan> scan;
+  mrpt::poses::CPose2D sensor_pose;  ///< sensor mounting on the vehicle
+  mrpt::Clock::time_point timestamp;
+};
+
+/** A constraint for the graph: the vehicle pose of node `to` seen from node `from`. */
+struct TrackerEdge
+{
+  size_t from = 0, to = 0;
+  mrpt::poses::CPose2D z;
+  Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
+  EdgeKind kind = EdgeKind::Consecutive;
+};
+
+/** Where the pose of a scan came from. */
+enum class TrackingSource
+{
+  First,           ///< the first scan: the map origin
+  Match,           ///< PLICP against the keyframe converged
+  Odometry,        ///< the match failed: previous pose moved by the odometry increment
+  ConstantMotion,  ///< the match failed, no odometry: previous pose moved by the last motion
+};
+const char* toString(TrackingSource s);
+
+struct TrackingStep
+{
+  mrpt::poses::CPose2D pose;      ///< vehicle pose of this scan in the map frame
+  size_t keyframe = 0;            ///< the keyframe `relative` refers to (the new one if made)
+  mrpt::poses::CPose2D relative;  ///< vehicle pose relative to that keyframe
+  MatchResult match;              ///< the match against the keyframe (status says if it failed)
+  TrackingSource source = TrackingSource::First;
+  bool new_keyframe = false;
+  std::vector<TrackerEdge> edges;  ///< the new node's edges
+  size_t dense_matches = 0;        ///< dense-neighbour matches tried for the new node
+};
+
+class LocalTracker
+{
+ public:
+  LocalTracker(const TrackingParams& tracking, const PlicpParams& plicp);
+
+  /** Tracks one scan. `odometry_increment` is the vehicle motion since the previous scan, if
+   * known. Throws std::invalid_argument for an observation with inconsistent geometry (see
+   * scanFromObservation); a scan with few or no valid rays is tracked by the fallback. */
+  TrackingStep process(const mrpt::obs::CObservation2DRangeScan& obs,
+                       const std::optional<mrpt::poses::CPose2D>& odometry_increment = std::nullopt);
+
+  /** Moves a keyframe (after graph optimization); later scans are placed relative to it. */
+  void setKeyframePose(size_t id, const mrpt::poses::CPose2D& pose);
+
+  const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+
+ private:
+  Keyframe& addKeyframe(const Scan& scan, const mrpt::poses::CPose2D& pose);
+  std::optional<TrackerEdge> matchEdge(const Keyframe& from, const Keyframe& to, const Scan& scan,
+                                       EdgeKind kind, MatchResult* result = nullptr) const;
+  TrackerEdge priorEdge(const Keyframe& from, const Keyframe& to) const;
+  bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
+
+  TrackingParams tracking_;
+  PlicpParams plicp_;
+  std::vector<Keyframe> keyframes_;
+  mrpt::poses::CPose2D relative_;     ///< last scan's vehicle pose relative to the last keyframe
+  mrpt::poses::CPose2D last_motion_;  ///< vehicle motion between the last two scans
+};
+
+/** Information matrix of a covariance, with variances floored at `min_variance` so that a
+ * near-singular covariance gives a large but finite information. */
+Eigen::Matrix3d informationFromCovariance(const Eigen::Matrix3d& cov, double min_variance = 1e-9);
+
+}  // namespace swslam

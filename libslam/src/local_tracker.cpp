@@ -1,0 +1,159 @@
+#include "swslam/tracking/local_tracker.h"
+
+#include "swslam/tracking/sensor_frame.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam
+{
+using mrpt::poses::CPose2D;
+
+const char* toString(TrackingSource s)
+{
+  switch (s)
+  {
+    case TrackingSource::First: return "first";
+    case TrackingSource::Match: return "match";
+    case TrackingSource::Odometry: return "odometry";
+    case TrackingSource::ConstantMotion: return "constant_motion";
+  }
+  return "unknown";
+}
+
+Eigen::Matrix3d informationFromCovariance(const Eigen::Matrix3d& cov, double min_variance)
+{
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(0.5 * (cov + cov.transpose()));
+  const Eigen::Vector3d inv = es.eigenvalues().cwiseMax(min_variance).cwiseInverse();
+  return es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
+}
+
+LocalTracker::LocalTracker(const TrackingParams& tracking, const PlicpParams& plicp)
+    : tracking_(tracking), plicp_(plicp)
+{
+}
+
+Keyframe& LocalTracker::addKeyframe(const Scan& scan, const CPose2D& pose)
+{
+  Keyframe kf;
+  kf.id = keyframes_.size();
+  kf.pose = pose;
+  kf.scan = std::make_shared<const ReferenceScan>(scan, plicp_);
+  kf.sensor_pose = scan.sensor_pose;
+  kf.timestamp = scan.timestamp;
+  keyframes_.push_back(std::move(kf));
+  return keyframes_.back();
+}
+
+bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
+{
+  return rel.norm() > tracking_.keyframe_translation ||
+         std::abs(rel.phi()) > tracking_.keyframe_rotation;
+}
+
+std::optional<TrackerEdge> LocalTracker::matchEdge(const Keyframe& from, const Keyframe& to,
+                                                   const Scan& scan, EdgeKind kind,
+                                                   MatchResult* result) const
+{
+  // Guess from the current estimates; PLICP works in the sensor frame.
+  const CPose2D guess = to.pose - from.pose;
+  const MatchResult m = matchScans(*from.scan, scan, sensorMotion(from.sensor_pose, guess), plicp_);
+  if (result) *result = m;
+  if (!m.ok()) return std::nullopt;
+  TrackerEdge e;
+  e.from = from.id;
+  e.to = to.id;
+  e.z = vehicleMotion(from.sensor_pose, m.pose);
+  e.information = informationFromCovariance(
+      vehicleMotionCovariance(from.sensor_pose, m.pose, m.covariance));
+  e.kind = kind;
+  return e;
+}
+
+TrackerEdge LocalTracker::priorEdge(const Keyframe& from, const Keyframe& to) const
+{
+  TrackerEdge e;
+  e.from = from.id;
+  e.to = to.id;
+  e.z = to.pose - from.pose;
+  const double sxy = tracking_.lost_prior_sigma_xy, sth = tracking_.lost_prior_sigma_theta;
+  e.information = Eigen::Vector3d(1 / (sxy * sxy), 1 / (sxy * sxy), 1 / (sth * sth)).asDiagonal();
+  e.kind = EdgeKind::OdometryPrior;
+  return e;
+}
+
+TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs,
+                                   const std::optional<CPose2D>& odometry_increment)
+{
+  const Scan scan = scanFromObservation(obs, tracking_.min_range);
+  TrackingStep step;
+  if (keyframes_.empty())
+  {
+    addKeyframe(scan, CPose2D());
+    step.new_keyframe = true;
+    return step;
+  }
+  const Keyframe& last = keyframes_.back();
+  // Initial guess: the previous relative pose moved by the expected motion (the paper uses
+  // the previous motion; odometry, when present, is the better prediction).
+  const CPose2D motion = odometry_increment ? *odometry_increment : last_motion_;
+  const CPose2D predicted = relative_ + motion;
+  step.match = matchScans(*last.scan, scan, sensorMotion(last.sensor_pose, predicted), plicp_);
+  CPose2D rel = predicted;
+  if (step.match.ok())
+  {
+    rel = vehicleMotion(last.sensor_pose, step.match.pose);
+    step.source = TrackingSource::Match;
+  }
+  else
+    step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
+  last_motion_ = rel - relative_;
+  relative_ = rel;
+  step.keyframe = last.id;
+  step.relative = rel;
+  step.pose = last.pose + rel;
+  if (!pastKeyframeThreshold(rel)) return step;
+
+  // A new node: the consecutive edge from the match (or, without one, a weak prior that says
+  // so), then dense edges to every other node within the radius, nearest first.
+  const Keyframe& prev = keyframes_.back();
+  const size_t prev_id = prev.id;
+  Keyframe& node = addKeyframe(scan, step.pose);
+  const Keyframe& previous = keyframes_[prev_id];
+  if (step.source == TrackingSource::Match)
+  {
+    TrackerEdge e{prev_id, node.id, rel, Eigen::Matrix3d::Identity(), EdgeKind::Consecutive};
+    e.information = informationFromCovariance(
+        vehicleMotionCovariance(previous.sensor_pose, step.match.pose, step.match.covariance));
+    step.edges.push_back(e);
+  }
+  else
+    step.edges.push_back(priorEdge(previous, node));
+  std::vector<std::pair<double, size_t>> near;
+  for (const auto& kf : keyframes_)
+  {
+    const double d = (kf.pose.translation() - node.pose.translation()).norm();
+    if (kf.id != node.id && kf.id != prev_id && d <= tracking_.dense_radius) near.emplace_back(d, kf.id);
+  }
+  std::sort(near.begin(), near.end());
+  near.resize(std::min(near.size(), static_cast<size_t>(tracking_.max_dense_edges)));
+  for (const auto& [d, id] : near)
+  {
+    step.dense_matches++;
+    if (auto e = matchEdge(keyframes_[id], node, scan, EdgeKind::DenseNeighbour)) step.edges.push_back(*e);
+  }
+  step.new_keyframe = true;
+  step.keyframe = node.id;
+  step.relative = CPose2D();
+  relative_ = CPose2D();
+  return step;
+}
+
+void LocalTracker::setKeyframePose(size_t id, const CPose2D& pose)
+{
+  keyframes_.at(id).pose = pose;
+}
+
+}  // namespace swslam

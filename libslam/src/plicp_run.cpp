@@ -1,0 +1,203 @@
+#include "swslam/plicp/run.h"
+
+#include "swslam/plicp/closed_form.h"
+#include "swslam/plicp/outliers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam::plicp
+{
+std::vector<Eigen::Vector2d> transformed(const Scan& s, const Eigen::Vector3d& x)
+{
+  const double c = std::cos(x.z()), sn = std::sin(x.z());
+  std::vector<Eigen::Vector2d> out(s.size());
+  for (size_t i = 0; i < s.size(); i++)
+  {
+    const auto& p = s.points[i];
+    out[i] = {c * p.x() - sn * p.y() + x.x(), sn * p.x() + c * p.y() + x.y()};
+  }
+  return out;
+}
+
+namespace
+{
+/** Unit normal of the reference segment j1-j2. */
+Eigen::Vector2d normalOf(const Scan& ref, const Correspondence& k)
+{
+  const Eigen::Vector2d e = (ref.points[k.j1] - ref.points[k.j2]).normalized();
+  return {-e.y(), e.x()};
+}
+}  // namespace
+
+std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref,
+                               const std::vector<Correspondence>& cs)
+{
+  std::vector<double> e(cs.size());
+  for (size_t k = 0; k < cs.size(); k++)
+    e[k] = std::abs(normalOf(ref, cs[k]).dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
+  return e;
+}
+
+namespace
+{
+/** Outlier rejection of the correspondences found within `radius` (doubles only at the final
+ * radius: while the scans are still far apart many points share a nearest neighbour, and
+ * thinning them then shrinks the basin of convergence). */
+std::vector<Correspondence> rejectOutliers(const Scan& ref,
+                                           const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                           std::vector<Correspondence> found, double radius,
+                                           const PlicpParams& params)
+{
+  if (params.remove_doubles && radius <= params.max_correspondence_dist)
+    found = keepNearestPerReference(found, static_cast<int>(ref.size()));
+  return trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
+                            params.adaptive_quantile, params.adaptive_mult);
+}
+
+/** Convergence test of a step: the epsilons at the final radius; at a coarse radius only
+ * settling is needed (2% of the radius, 0.3 deg), the fine stages refine it. */
+bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& params)
+{
+  const bool coarse = radius > params.max_correspondence_dist;
+  const double eps_xy = coarse ? 0.02 * radius : params.epsilon_xy;
+  const double eps_th = coarse ? 0.005 : params.epsilon_theta;
+  return step.head<2>().norm() < eps_xy && std::abs(step.z()) < eps_th;
+}
+
+/** Iterates from run.x with matching radius `radius`, halving it each time the estimate
+ * settles, until it settles at max_correspondence_dist (Converged) or max_iterations. Fails
+ * with TooFewCorrespondences or Diverged (run.message says why). `first`, if not empty, is
+ * the correspondence set at run.x and `radius`, already searched. */
+void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
+             const PlicpParams& params, IcpRun& run, std::vector<Correspondence> first)
+{
+  const Scan& ref = reference.scan;
+  const size_t min_n = static_cast<size_t>(params.min_correspondences);
+  std::vector<Correspondence> previous, before_previous;
+  auto settled = [&]() {
+    if (radius <= params.max_correspondence_dist) return true;
+    radius = std::max(params.max_correspondence_dist, 0.5 * radius);
+    previous.clear();
+    before_previous.clear();
+    return false;
+  };
+  while (run.iterations < params.max_iterations)
+  {
+    run.iterations++;
+    const auto cur_in_ref = transformed(cur, run.x);
+    auto found = run.iterations == 1 && !first.empty()
+                     ? std::move(first)
+                     : findCorrespondences(ref, reference.index, cur_in_ref, radius);
+    run.kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
+    if (run.kept.size() < min_n)
+    {
+      run.status = MatchStatus::TooFewCorrespondences;
+      run.message = std::to_string(run.kept.size()) + " valid correspondences at iteration " +
+                    std::to_string(run.iterations) + " (need " + std::to_string(min_n) + ")";
+      return;
+    }
+    // The same set gives the same solution: a fixed point (or a 2-cycle between two sets).
+    if ((run.kept == previous || run.kept == before_previous) && settled())
+    {
+      run.status = MatchStatus::Converged;
+      return;
+    }
+    std::vector<PointToLine> terms;
+    terms.reserve(run.kept.size());
+    for (const auto& k : run.kept)
+      terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
+    const auto next = solvePointToLine(terms, run.x);
+    if (!next || !next->allFinite())
+    {
+      run.status = MatchStatus::Diverged;
+      run.message = "closed-form step failed at iteration " + std::to_string(run.iterations);
+      return;
+    }
+    const Eigen::Vector3d step(next->x() - run.x.x(), next->y() - run.x.y(),
+                               std::remainder(next->z() - run.x.z(), 2 * M_PI));
+    run.x = *next;
+    before_previous = std::move(previous);
+    previous = run.kept;
+    if (isSmallStep(step, radius, params) && settled())
+    {
+      run.status = MatchStatus::Converged;
+      return;
+    }
+  }
+  run.status = MatchStatus::MaxIterations;
+}
+
+/** Coarse to fine: when the guess matches few points within the final radius, a wide radius
+ * first widens the basin of convergence (it halves each time the estimate settles). Returns
+ * the start radius; `probe` gets the correspondences at the final radius if they were searched
+ * and the start is fine. */
+double startRadius(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x,
+                   const PlicpParams& params, std::vector<Correspondence>& probe)
+{
+  const double fine = params.max_correspondence_dist;
+  if (params.initial_correspondence_dist <= fine) return fine;
+  probe = findCorrespondences(reference.scan, reference.index, transformed(cur, x), fine);
+  if (probe.size() >= params.coarse_start_fraction * cur.size()) return fine;
+  probe.clear();
+  return params.initial_correspondence_dist;
+}
+
+/** A full run (start radius, then iterations) from `start`. */
+IcpRun runFrom(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& start,
+               const PlicpParams& params)
+{
+  IcpRun run;
+  run.x = start;
+  std::vector<Correspondence> probe;
+  const double radius = startRadius(reference, cur, start, params, probe);
+  iterate(reference, cur, radius, params, run, std::move(probe));
+  return run;
+}
+
+/** Quality of a run's end: current points within 3 range sigmas of the reference surface
+ * (0 for a failed run). Unlike the raw overlap, a wrong local minimum scores low. */
+size_t inlierCount(const ReferenceScan& reference, const Scan& cur, const IcpRun& run,
+                   const PlicpParams& params)
+{
+  if (run.status == MatchStatus::TooFewCorrespondences || run.status == MatchStatus::Diverged)
+    return 0;
+  const auto pts = transformed(cur, run.x);
+  const auto found = findCorrespondences(reference.scan, reference.index, pts,
+                                                params.max_correspondence_dist);
+  const auto errors = lineErrors(reference.scan, pts, found);
+  return static_cast<size_t>(std::count_if(errors.begin(), errors.end(), [&](double e) {
+    return e < 3 * params.range_sigma;
+  }));
+}
+
+/** PLICP from the guess; if it ends poorly (few inliers), also from the guess turned by
+ * +-1..retry_rotations steps, keeping a retry only if it has retry_min_gain times the
+ * inliers of the first run (a low-overlap pair must not be "improved" into a wrong pose). */
+}  // namespace
+
+IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x0,
+                      const PlicpParams& params)
+{
+  IcpRun run = runFrom(reference, cur, x0, params);
+  const size_t first = inlierCount(reference, cur, run, params);
+  if (first >= params.retry_below_inlier_fraction * cur.size()) return run;
+  size_t best = first;
+  int iterations = run.iterations;
+  for (int h = 1; h <= 2 * params.retry_rotations; h++)
+  {
+    const int k = (h + 1) / 2 * (h % 2 ? 1 : -1);  // +1, -1, +2, -2, ...
+    IcpRun trial = runFrom(reference, cur, x0 + Eigen::Vector3d(0, 0, k * params.retry_rotation_step), params);
+    iterations += trial.iterations;
+    const size_t n = inlierCount(reference, cur, trial, params);
+    if (n > best && n >= params.retry_min_gain * first)
+    {
+      best = n;
+      run = std::move(trial);
+    }
+  }
+  run.iterations = iterations;
+  return run;
+}
+
+}  // namespace swslam::plicp

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# End to end: swslam-graph-optimize on MRPT's circle graph (TORO form) and on bad input.
+# Args: SOURCE_DIR BINARY_DIR
+set -euo pipefail
+BIN="$2/apps/swslam-graph-optimize"
+IN=/usr/share/mrpt/datasets/graph_2d_circle_50nodes.graph
+DIR="$(mktemp -d)"
+trap 'rm -rf "$DIR"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$BIN" -i "$IN" -o "$DIR/out.g2o" --alpha 2 --max-iters 50 > "$DIR/log.txt" || fail "optimize failed"
+cat "$DIR/log.txt"
+grep -q "loaded 50 vertices, 101 edges, 0 skipped lines" "$DIR/log.txt" || fail "load summary"
+grep -q "status: converged" "$DIR/log.txt" || fail "not converged"
+final=$(awk '/final chi2/ {print $3}' "$DIR/log.txt")
+awk -v c="$final" 'BEGIN { exit !(c < 0.01) }' || fail "final chi2 $final"
+[ "$(grep -c '^VERTEX_SE2' "$DIR/out.g2o")" = 50 ] || fail "vertices written"
+[ "$(grep -c '^EDGE_SE2' "$DIR/out.g2o")" = 101 ] || fail "edges written"
+grep -q '^FIX 0$' "$DIR/out.g2o" || fail "gauge written"
+
+# The written graph is already optimal: optimizing it again changes nothing.
+"$BIN" -i "$DIR/out.g2o" -o "$DIR/again.g2o" --alpha -inf --c 2 > "$DIR/again.txt" || fail "re-optimize"
+again=$(awk '/initial chi2/ {print $3}' "$DIR/again.txt")
+awk -v c="$again" 'BEGIN { exit !(c != "" && c < 0.01) }' || fail "reloaded graph is not the optimum: '$again'"
+
+# Garbage lines are skipped with their line numbers.
+{ head -3 "$IN"; echo "this is not a graph line"; tail -n +4 "$IN"; } > "$DIR/garbage.graph"
+"$BIN" -i "$DIR/garbage.graph" -o "$DIR/g.g2o" > "$DIR/garbage.txt" || fail "garbage file rejected"
+grep -q "1 skipped lines" "$DIR/garbage.txt" || fail "skip count"
+grep -q "skipped line 4: unknown keyword 'this'" "$DIR/garbage.txt" || fail "skip line number"
+
+# Bad records and bad options fail with a message and no output file.
+echo "EDGE2 0 99 1 0 0 1 0 1 1 0 0" >> "$DIR/garbage.graph"
+if "$BIN" -i "$DIR/garbage.graph" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "missing node accepted"; fi
+grep -q "missing node 99" "$DIR/err.txt" || fail "missing node message: $(cat "$DIR/err.txt")"
+[ ! -e "$DIR/bad.g2o" ] || fail "output written on error"
+if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha 3 2> "$DIR/err.txt" > /dev/null; then fail "alpha 3 accepted"; fi
+grep -q "alpha must be in" "$DIR/err.txt" || fail "alpha message"
+if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha=2 2> "$DIR/err.txt" > /dev/null; then fail "bad syntax accepted"; fi
+[ ! -e "$DIR/bad.g2o" ] || fail "output written on a command-line error"
+if "$BIN" -i "$DIR/nope.graph" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "missing file accepted"; fi
+grep -q "cannot open" "$DIR/err.txt" || fail "missing file message"
+echo "graph_optimize_app_test: OK"

@@ -1,0 +1,181 @@
+// Local tracking on a synthetic cluttered world along a known path.
+#include <swslam/tracking/local_tracker.h>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** Vehicle poses along a gentle S-curve at 1.5 m/s sampled at 20 Hz. */
+std::vector<CPose2D> sCurve(int n)
+{
+  std::vector<CPose2D> path;
+  for (int k = 0; k < n; k++)
+  {
+    const double t = 0.05 * k, x = -20 + 1.5 * t, y = -3 + 1.5 * std::sin(0.15 * x);
+    const double yaw = std::atan(1.5 * 0.15 * std::cos(0.15 * x));
+    path.emplace_back(x, y, yaw);
+  }
+  return path;
+}
+
+mrpt::obs::CObservation2DRangeScan scanAt(const test::World& world, const CPose2D& vehicle,
+                                          const CPose2D& mount, std::mt19937& rng)
+{
+  auto obs = test::simulateObservation(world, vehicle + mount, 541, 1.5 * M_PI, 30, 0.02, rng);
+  obs.sensorPose = mrpt::poses::CPose3D(mount);
+  return obs;
+}
+}  // namespace
+
+TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges)
+{
+  const auto world = test::clutteredWorld(5);
+  const CPose2D mount(0.3, 0.1, 0.05);
+  const auto path = sCurve(300);
+  std::mt19937 rng(1);
+  TrackingParams tp;
+  LocalTracker tracker(tp, PlicpParams());
+  std::vector<size_t> scan_of_keyframe;
+  size_t consecutive = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    const auto step = tracker.process(scanAt(world, path[k], mount, rng));
+    const CPose2D expected = (-path[0]) + path[k];  // the map frame is the first pose
+    EXPECT_NEAR(step.pose.x(), expected.x(), 0.1 + 0.002 * k) << "scan " << k;
+    EXPECT_NEAR(step.pose.y(), expected.y(), 0.1 + 0.002 * k) << "scan " << k;
+    if (k > 0) EXPECT_EQ(step.source, TrackingSource::Match) << step.match.message;
+    if (!step.new_keyframe) continue;
+    scan_of_keyframe.push_back(k);
+    for (const auto& e : step.edges)
+    {
+      EXPECT_NE(e.kind, EdgeKind::OdometryPrior);
+      EXPECT_TRUE(e.information.allFinite());
+      // Every edge is the true relative vehicle pose between the two keyframes' scans.
+      const CPose2D truth = path[scan_of_keyframe.at(e.to)] - path[scan_of_keyframe.at(e.from)];
+      EXPECT_NEAR(e.z.x(), truth.x(), 0.03) << edgeKindName(e.kind) << " " << e.from << "->" << e.to;
+      EXPECT_NEAR(e.z.y(), truth.y(), 0.03) << edgeKindName(e.kind) << " " << e.from << "->" << e.to;
+      EXPECT_NEAR(e.z.phi(), truth.phi(), 0.01);
+      if (e.kind == EdgeKind::Consecutive)
+      {
+        consecutive++;
+        EXPECT_EQ(e.from + 1, e.to);
+      }
+    }
+  }
+  const size_t keyframes = scan_of_keyframe.size();
+  EXPECT_GT(keyframes, 20u);  // 22 m travelled, a node every 0.5 m
+  EXPECT_EQ(consecutive, keyframes - 1);
+}
+
+TEST(LocalTracker, DenseEdgesConnectNearbyNodes)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(200);
+  std::mt19937 rng(2);
+  TrackingParams tp;
+  tp.dense_radius = 2.0;
+  LocalTracker tracker(tp, PlicpParams());
+  size_t dense = 0;
+  for (const auto& p : path)
+  {
+    const auto step = tracker.process(scanAt(world, p, CPose2D(), rng));
+    for (const auto& e : step.edges)
+    {
+      if (e.kind != EdgeKind::DenseNeighbour) continue;
+      dense++;
+      const auto& kfs = tracker.keyframes();
+      const CPose2D rel = kfs[e.to].pose - kfs[e.from].pose;
+      EXPECT_NEAR(e.z.x(), rel.x(), 0.05);
+      EXPECT_NEAR(e.z.y(), rel.y(), 0.05);
+      EXPECT_LE(rel.norm(), 2.0 + 0.1);
+    }
+  }
+  EXPECT_GT(dense, 10u);  // nodes 0.5 m apart within 2 m: several neighbours each
+}
+
+TEST(LocalTracker, ScansWithoutValidRaysFallBackAndSaySo)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(120);
+  std::mt19937 rng(3);
+  LocalTracker tracker{TrackingParams(), PlicpParams()};
+  size_t fallbacks = 0, priors = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    auto obs = scanAt(world, path[k], CPose2D(), rng);
+    const bool blind = k >= 40 && k < 70;  // 1.5 s of "open water"
+    if (blind)
+      for (size_t i = 0; i < obs.getScanSize(); i++) obs.setScanRangeValidity(i, false);
+    const auto step = tracker.process(obs);
+    if (blind)
+    {
+      EXPECT_EQ(step.source, TrackingSource::ConstantMotion);
+      EXPECT_EQ(step.match.status, MatchStatus::TooFewCorrespondences);
+      fallbacks++;
+    }
+    for (const auto& e : step.edges)
+    {
+      // Without a match no consecutive edge is made: a weak prior says what happened.
+      if (blind) EXPECT_NE(e.kind, EdgeKind::Consecutive);
+      if (e.kind == EdgeKind::OdometryPrior)
+      {
+        priors++;
+        EXPECT_LT(e.information(0, 0), 10.0);
+      }
+    }
+    const CPose2D expected = (-path[0]) + path[k];
+    EXPECT_NEAR(step.pose.x(), expected.x(), 0.3) << "scan " << k;
+  }
+  EXPECT_EQ(fallbacks, 30u);
+  EXPECT_GE(priors, 1u);
+}
+
+TEST(LocalTracker, OdometryIsTheFallbackWhenGiven)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(60);
+  std::mt19937 rng(4);
+  LocalTracker tracker{TrackingParams(), PlicpParams()};
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    auto obs = scanAt(world, path[k], CPose2D(), rng);
+    if (k == 30)
+      for (size_t i = 0; i < obs.getScanSize(); i++) obs.setScanRangeValidity(i, false);
+    const auto odo = k > 0 ? std::optional<CPose2D>(path[k] - path[k - 1]) : std::nullopt;
+    const auto step = tracker.process(obs, odo);
+    EXPECT_EQ(step.source, k == 0 ? TrackingSource::First
+                                  : (k == 30 ? TrackingSource::Odometry : TrackingSource::Match));
+  }
+}
+
+TEST(LocalTracker, MovedKeyframesMoveLaterScans)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(10);
+  std::mt19937 rng(5);
+  LocalTracker tracker{TrackingParams(), PlicpParams()};
+  tracker.process(scanAt(world, path[0], CPose2D(), rng));
+  tracker.setKeyframePose(0, CPose2D(10, 0, 0));
+  const auto step = tracker.process(scanAt(world, path[1], CPose2D(), rng));
+  EXPECT_NEAR(step.pose.x(), 10 + ((-path[0]) + path[1]).x(), 0.02);
+}
+
+TEST(LocalTracker, InformationIsTheInverseCovarianceWithAFloor)
+{
+  Eigen::Matrix3d cov;
+  cov << 0.04, 0.01, 0, 0.01, 0.09, 0.002, 0, 0.002, 0.01;
+  EXPECT_LT((informationFromCovariance(cov) * cov - Eigen::Matrix3d::Identity()).norm(), 1e-9);
+  const Eigen::Matrix3d singular = Eigen::Vector3d(1, 0, 1).asDiagonal();
+  const Eigen::Matrix3d info = informationFromCovariance(singular, 1e-6);
+  EXPECT_TRUE(info.allFinite());
+  EXPECT_NEAR(info(1, 1), 1e6, 1);
+}
