@@ -10,6 +10,7 @@ packages=(
   libmrpt-obs-dev libmrpt-slam-dev libmrpt-maps-dev libmrpt-graphs-dev
   libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
   mrpt-common
+  libegl1 libegl-mesa0 libgl1-mesa-dri
 )
 if [[ ${1:-} == --with-bench ]]; then
   packages+=(libceres-dev)

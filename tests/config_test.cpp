@@ -34,6 +34,7 @@ TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
   defaults.tracking.saveToConfigFile(written, "tracking");
   defaults.carmen.saveToConfigFile(written, "carmen");
   defaults.graph_optimizer.saveToConfigFile(written, "graph_optimizer");
+  defaults.map.saveToConfigFile(written, "map");
   for (const auto& section : SystemParams::sections())
   {
     std::vector<std::string> keys;

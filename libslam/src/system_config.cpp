@@ -11,7 +11,8 @@ namespace swslam
 {
 const std::vector<std::string>& SystemParams::sections()
 {
-  static const std::vector<std::string> names = {"plicp", "tracking", "carmen", "graph_optimizer"};
+  static const std::vector<std::string> names = {"plicp", "tracking", "carmen",
+                                                 "graph_optimizer", "map"};
   return names;
 }
 
@@ -23,6 +24,7 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg)
   p.tracking = loadStrict<TrackingParams>(cfg, "tracking");
   p.carmen = loadStrict<CarmenParams>(cfg, "carmen");
   p.graph_optimizer = loadStrict<GraphOptimizerParams>(cfg, "graph_optimizer");
+  p.map = loadStrict<MapParams>(cfg, "map");
   return p;
 }
 

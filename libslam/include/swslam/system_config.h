@@ -4,6 +4,7 @@
 
 #include <swslam/carmen_log.h>
 #include <swslam/graph_optimizer_params.h>
+#include <swslam/map/map_params.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/tracking/tracking_params.h>
 
@@ -20,6 +21,7 @@ struct SystemParams
   TrackingParams tracking;  ///< [tracking]
   CarmenParams carmen;  ///< [carmen]
   GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
+  MapParams map;        ///< [map]
 
   /** Section names, in file order. */
   static const std::vector<std::string>& sections();

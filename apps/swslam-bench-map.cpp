@@ -1,0 +1,47 @@
+// Benchmark: map construction (insert, update, re-insertion after a loop) on a log with
+// reference poses; optionally writes the map outputs of the result.
+#include <swslam/config_keys.h>
+#include <swslam/map/map_benchmark.h>
+#include <swslam/map/map_outputs.h>
+#include <swslam/tum_io.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFile.h>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  TCLAP::CmdLine cmd("swslam-bench-map: map construction timings", ' ', "0.1");
+  TCLAP::ValueArg<std::string> input("i", "input", "Rawlog with 2D scans", true, "", "LOG.rawlog", cmd);
+  TCLAP::ValueArg<std::string> gt("g", "ground-truth", "Reference poses (TUM)", true, "", "GT.tum", cmd);
+  TCLAP::ValueArg<size_t> every("n", "node-every", "One node every N scans", false, 20, "N", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Config file ([map] section)", false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> output("o", "output", "Write the map outputs here", false, "", "DIR", cmd);
+  try
+  {
+    cmd.parse(argc, argv);
+    swslam::MapParams params;
+    if (!config.getValue().empty())
+      params = swslam::loadStrict<swslam::MapParams>(mrpt::config::CConfigFile(config.getValue()), "map");
+    const auto data = swslam::loadScansWithTruth(input.getValue(), swslam::readTum(gt.getValue()));
+    swslam::MapBuilder builder(params);
+    const auto f = swslam::benchmarkMapBuilder(data, every.getValue(), builder);
+    std::cout << "# " << input.getValue() << ", resolution " << params.resolution << " m\n"
+              << swslam::formatFigures(f);
+    if (!output.getValue().empty())
+    {
+      swslam::RenderInput render;
+      render.trajectory = data.truth;
+      for (const auto& problem :
+           swslam::writeMapOutputs(output.getValue(), builder.snapshot(), params, &render))
+        std::cerr << "swslam-bench-map: " << problem.file << ": " << problem.message << "\n";
+    }
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "swslam-bench-map: " << e.what() << "\n";
+    return 1;
+  }
+}
