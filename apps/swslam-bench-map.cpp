@@ -1,11 +1,11 @@
 // Benchmark: map construction (insert, update, re-insertion after a loop) on a log with
 // reference poses; optionally writes the map outputs of the result.
+#include "cli.h"
 #include <swslam/config_keys.h>
 #include <swslam/map/map_benchmark.h>
 #include <swslam/map/map_outputs.h>
 #include <swslam/tum_io.h>
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 
 #include <iostream>
@@ -20,7 +20,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> output("o", "output", "Write the map outputs here", false, "", "DIR", cmd);
   try
   {
-    cmd.parse(argc, argv);
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     swslam::MapParams params;
     if (!config.getValue().empty())
       params = swslam::loadStrict<swslam::MapParams>(mrpt::config::CConfigFile(config.getValue()), "map");
