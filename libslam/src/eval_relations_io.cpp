@@ -1,5 +1,7 @@
 #include "swslam/eval/relations.h"
 
+#include "swslam/number_rows.h"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -16,24 +18,9 @@ constexpr double kPlanarTolerance = 1e-6;
 
 std::vector<Relation> readRelations(const std::string& path)
 {
-  std::ifstream f(path);
-  if (!f) throw std::runtime_error("relations: cannot open '" + path + "'");
   std::vector<Relation> out;
-  std::string line;
-  size_t line_no = 0;
-  while (std::getline(f, line))
+  for (const auto& v : readNumberRows<8>(path, "relations", "t1 t2 x y z roll pitch yaw"))
   {
-    line_no++;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    std::istringstream ss(line);
-    double v[8];
-    bool ok = true;
-    for (double& x : v) ok = ok && (ss >> x) && std::isfinite(x);
-    std::string rest;
-    if (!ok || (ss >> rest))
-      throw std::runtime_error("relations: '" + path + "' line " + std::to_string(line_no) +
-                               ": expected 8 finite numbers 't1 t2 x y z roll pitch yaw'");
     const bool planar = std::abs(v[4]) < kPlanarTolerance &&
                         std::abs(v[5]) < kPlanarTolerance && std::abs(v[6]) < kPlanarTolerance;
     out.push_back({v[0], v[1], mrpt::poses::CPose2D(v[2], v[3], v[7]), planar});

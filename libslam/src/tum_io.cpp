@@ -1,33 +1,19 @@
 #include "swslam/tum_io.h"
 
 #include "swslam/atomic_file.h"
+#include "swslam/number_rows.h"
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 
 namespace swslam
 {
 std::vector<StampedPose> readTum(const std::string& path)
 {
-  std::ifstream f(path);
-  if (!f) throw std::runtime_error("tum: cannot open '" + path + "'");
   std::vector<StampedPose> out;
-  std::string line;
-  size_t line_no = 0;
-  while (std::getline(f, line))
+  for (const auto& [t, x, y, z, qx, qy, qz, qw] :
+       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw"))
   {
-    line_no++;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    std::istringstream ss(line);
-    double t, x, y, z, qx, qy, qz, qw;
-    if (!(ss >> t >> x >> y >> z >> qx >> qy >> qz >> qw) || !std::isfinite(t) ||
-        !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(qz) || !std::isfinite(qw))
-      throw std::runtime_error("tum: '" + path + "' line " + std::to_string(line_no) +
-                               ": expected 8 finite numbers 't x y z qx qy qz qw'");
     const double yaw = std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz));
     out.push_back({t, mrpt::poses::CPose2D(x, y, yaw)});
   }
