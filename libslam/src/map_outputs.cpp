@@ -13,8 +13,11 @@ std::vector<OutputProblem> writeMapOutputs(const std::string& dir,
                                            const mrpt::maps::COccupancyGridMap2D& grid,
                                            const MapParams& params, const RenderInput* render)
 {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);  // a missing output folder is made
   if (!std::filesystem::is_directory(dir))
-    throw std::invalid_argument("map outputs: '" + dir + "' is not a directory");
+    throw std::invalid_argument("map outputs: '" + dir + "' is not a directory and cannot be created" +
+                                (ec ? ": " + ec.message() : std::string()));
   const std::filesystem::path d(dir);
   std::vector<OutputProblem> problems;
   auto attempt = [&](const char* file, const std::function<void(const std::string&)>& write) {
