@@ -233,5 +233,8 @@ TEST(MapFiles, WriteMapOutputsWritesEveryFile)
   for (const char* f : {"map.gridmap.gz", "map.png", "map.yaml", "map.pgm", "map.bt"})
     EXPECT_TRUE(fs::is_regular_file(dir + "/" + f)) << f;
   if (problems.empty()) EXPECT_TRUE(fs::is_regular_file(dir + "/render.png"));
-  EXPECT_THROW(writeMapOutputs(dir + "/nope", g, MapParams(), nullptr), std::invalid_argument);
+  // A missing output folder is created; a path that is a file is an error.
+  EXPECT_TRUE(writeMapOutputs(dir + "/new/sub", g, MapParams(), nullptr).empty());
+  EXPECT_TRUE(fs::is_regular_file(dir + "/new/sub/map.png"));
+  EXPECT_THROW(writeMapOutputs(dir + "/map.png", g, MapParams(), nullptr), std::invalid_argument);
 }
