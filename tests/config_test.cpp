@@ -30,11 +30,7 @@ TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
   const mrpt::config::CConfigFile file(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   const SystemParams defaults;
   mrpt::config::CConfigFileMemory written;
-  defaults.plicp.saveToConfigFile(written, "plicp");
-  defaults.tracking.saveToConfigFile(written, "tracking");
-  defaults.carmen.saveToConfigFile(written, "carmen");
-  defaults.graph_optimizer.saveToConfigFile(written, "graph_optimizer");
-  defaults.map.saveToConfigFile(written, "map");
+  saveSystemParams(defaults, written);
   for (const auto& section : SystemParams::sections())
   {
     std::vector<std::string> keys;

@@ -54,13 +54,11 @@ bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
 }
 
 std::optional<TrackerEdge> LocalTracker::matchEdge(const Keyframe& from, const Keyframe& to,
-                                                   const Scan& scan, EdgeKind kind,
-                                                   MatchResult* result) const
+                                                   const Scan& scan, EdgeKind kind) const
 {
   // Guess from the current estimates; PLICP works in the sensor frame.
   const CPose2D guess = to.pose - from.pose;
   const MatchResult m = matchScans(*from.scan, scan, sensorMotion(from.sensor_pose, guess), plicp_);
-  if (result) *result = m;
   if (!m.ok()) return std::nullopt;
   TrackerEdge e;
   e.from = from.id;
@@ -118,8 +116,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
 
   // A new node: the consecutive edge from the match (or, without one, a weak prior that says
   // so), then dense edges to every other node within the radius, nearest first.
-  const Keyframe& prev = keyframes_.back();
-  const size_t prev_id = prev.id;
+  const size_t prev_id = keyframes_.back().id;
   Keyframe& node = addKeyframe(scan, step.pose);
   const Keyframe& previous = keyframes_[prev_id];
   if (step.source == TrackingSource::Match)

@@ -9,10 +9,35 @@
 
 namespace swslam
 {
-const std::vector<std::string>& SystemParams::sections()
+namespace
 {
-  static const std::vector<std::string> names = {"plicp", "tracking", "carmen",
-                                                 "graph_optimizer", "map"};
+/** The module table, for const and non-const access alike. */
+template <class Options, class Params>
+std::vector<std::pair<std::string, Options*>> modulesOf(Params& p)
+{
+  return {{"plicp", &p.plicp},
+          {"tracking", &p.tracking},
+          {"carmen", &p.carmen},
+          {"graph_optimizer", &p.graph_optimizer},
+          {"map", &p.map}};
+}
+}  // namespace
+
+std::vector<std::pair<std::string, mrpt::config::CLoadableOptions*>> SystemParams::modules()
+{
+  return modulesOf<mrpt::config::CLoadableOptions>(*this);
+}
+
+std::vector<std::pair<std::string, const mrpt::config::CLoadableOptions*>> SystemParams::modules()
+    const
+{
+  return modulesOf<const mrpt::config::CLoadableOptions>(*this);
+}
+
+std::vector<std::string> SystemParams::sections()
+{
+  std::vector<std::string> names;
+  for (const auto& [name, m] : SystemParams().modules()) names.push_back(name);
   return names;
 }
 
@@ -20,12 +45,17 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg)
 {
   checkKnownSections(cfg, SystemParams::sections());
   SystemParams p;
-  p.plicp = loadStrict<PlicpParams>(cfg, "plicp");
-  p.tracking = loadStrict<TrackingParams>(cfg, "tracking");
-  p.carmen = loadStrict<CarmenParams>(cfg, "carmen");
-  p.graph_optimizer = loadStrict<GraphOptimizerParams>(cfg, "graph_optimizer");
-  p.map = loadStrict<MapParams>(cfg, "map");
+  for (auto& [name, module] : p.modules())
+  {
+    checkKnownKeys(cfg, name, *module);
+    module->loadFromConfigFile(cfg, name);
+  }
   return p;
+}
+
+void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase& cfg)
+{
+  for (const auto& [name, module] : params.modules()) module->saveToConfigFile(cfg, name);
 }
 
 SystemParams loadSystemParams(const std::string& ini_path)

@@ -11,6 +11,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace swslam
@@ -23,13 +24,21 @@ struct SystemParams
   GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
   MapParams map;        ///< [map]
 
+  /** Each module's section name and parameters, in file order: the one list every load,
+   * save and section check goes through. */
+  std::vector<std::pair<std::string, mrpt::config::CLoadableOptions*>> modules();
+  std::vector<std::pair<std::string, const mrpt::config::CLoadableOptions*>> modules() const;
+
   /** Section names, in file order. */
-  static const std::vector<std::string>& sections();
+  static std::vector<std::string> sections();
 };
 
 /** Loads every section present; absent sections keep their defaults. Throws
  * std::invalid_argument naming the section or key that is wrong. */
 SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg);
 SystemParams loadSystemParams(const std::string& ini_path);
+
+/** Writes every section with its current values (what default.ini documents). */
+void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase& cfg);
 
 }  // namespace swslam

@@ -78,7 +78,7 @@ class LocalTracker
  private:
   Keyframe& addKeyframe(const Scan& scan, const mrpt::poses::CPose2D& pose);
   std::optional<TrackerEdge> matchEdge(const Keyframe& from, const Keyframe& to, const Scan& scan,
-                                       EdgeKind kind, MatchResult* result = nullptr) const;
+                                       EdgeKind kind) const;
   TrackerEdge priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
 
