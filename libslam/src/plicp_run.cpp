@@ -158,19 +158,20 @@ IcpRun runFrom(const ReferenceScan& reference, const Scan& cur, const Eigen::Vec
 /** Quality of a run's end: current points within 3 range sigmas of the reference surface
  * (0 for a failed run). Unlike the raw overlap, a wrong local minimum scores low. */
 size_t inlierCount(const ReferenceScan& reference, const Scan& cur, const IcpRun& run,
-                   const PlicpParams& params)
+                   const PlicpParams& params, bool kept_only = false)
 {
   if (run.status == MatchStatus::TooFewCorrespondences || run.status == MatchStatus::Diverged)
     return 0;
   const auto pts = transformed(cur, run.x);
-  const auto found = findCorrespondences(reference.scan, reference.index, pts,
-                                                params.max_correspondence_dist);
-  const auto errors = lineErrors(reference.scan, pts, found);
+  const auto errors =
+      lineErrors(reference.scan, pts,
+                 kept_only ? run.kept
+                           : findCorrespondences(reference.scan, reference.index, pts,
+                                                 params.max_correspondence_dist));
   return static_cast<size_t>(std::count_if(errors.begin(), errors.end(), [&](double e) {
     return e < 3 * params.range_sigma;
   }));
 }
-
 /** PLICP from the guess; if it ends poorly (few inliers), also from the guess turned by
  * +-1..retry_rotations steps, keeping a retry only if it has retry_min_gain times the
  * inliers of the first run (a low-overlap pair must not be "improved" into a wrong pose). */
@@ -180,8 +181,12 @@ IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eig
                       const PlicpParams& params)
 {
   IcpRun run = runFrom(reference, cur, x0, params);
+  // The run's own final set counts no more inliers than a fresh search, so enough of them
+  // settles it without one (the common case, kept off the per-scan hot path).
+  const double enough = params.retry_below_inlier_fraction * cur.size();
+  if (inlierCount(reference, cur, run, params, /*kept_only=*/true) >= enough) return run;
   const size_t first = inlierCount(reference, cur, run, params);
-  if (first >= params.retry_below_inlier_fraction * cur.size()) return run;
+  if (first >= enough) return run;
   size_t best = first;
   int iterations = run.iterations;
   for (int h = 1; h <= 2 * params.retry_rotations; h++)
