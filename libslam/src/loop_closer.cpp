@@ -1,0 +1,132 @@
+#include "swslam/loop/loop_closer.h"
+
+#include "swslam/tracking/sensor_frame.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace swslam
+{
+using mrpt::poses::CPose2D;
+
+const char* toString(LoopCheck::Verdict v)
+{
+  switch (v)
+  {
+    case LoopCheck::Verdict::Accepted: return "accepted";
+    case LoopCheck::Verdict::MatchFailed: return "match_failed";
+    case LoopCheck::Verdict::PoorOverlap: return "poor_overlap";
+    case LoopCheck::Verdict::GateRejected: return "gate_rejected";
+  }
+  return "unknown";
+}
+
+std::vector<size_t> loopCandidates(const PoseGraph& graph, size_t newest, const LoopClosureParams& p)
+{
+  const CPose2D& here = graph.pose(newest);  // throws for a missing node
+  const auto gap = static_cast<size_t>(p.min_index_gap);
+  if (!p.enabled || p.max_candidates <= 0 || newest < gap) return {};
+  const auto& linked_edges = graph.edgesOf(newest);
+  auto linked = [&](size_t id) {
+    return std::any_of(linked_edges.begin(), linked_edges.end(), [&](size_t e) {
+      const auto& edge = graph.edge(e);
+      return edge.from == id || edge.to == id;
+    });
+  };
+  // The node map is ordered by id: walk the ids old enough, stop past the last one.
+  std::vector<std::pair<double, size_t>> near;
+  const auto& nodes = graph.network().nodes;
+  for (auto it = nodes.begin(); it != nodes.end() && it->first < newest && it->first + gap <= newest; ++it)
+  {
+    const double d = (it->second.translation() - here.translation()).norm();
+    if (d <= p.max_distance && !linked(it->first)) near.emplace_back(d, it->first);
+  }
+  std::sort(near.begin(), near.end());
+  near.resize(std::min(near.size(), static_cast<size_t>(p.max_candidates)));
+  std::vector<size_t> ids;
+  for (const auto& n : near) ids.push_back(n.second);
+  return ids;
+}
+
+Eigen::Matrix3d driftCovariance(double path_gap, const LoopClosureParams& p)
+{
+  const double gap = std::abs(path_gap);
+  const double sxy = std::max(p.drift_xy_per_m * gap, p.min_drift_sigma_xy);
+  const double sth = std::max(p.drift_theta_per_m * gap, p.min_drift_sigma_theta);
+  return Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
+}
+
+double loopMahalanobis2(const CPose2D& predicted, const CPose2D& measured,
+                        const Eigen::Matrix3d& measured_cov, const Eigen::Matrix3d& drift_cov)
+{
+  // MRPT: a - b is b^-1 (+) a. Its translation R(pred)' (t_meas - t_pred) and its angle
+  // phi_meas - phi_pred are linear in the measurement, so J is exact.
+  const CPose2D err = measured - predicted;
+  const Eigen::Vector3d e(err.x(), err.y(), mrpt::math::wrapToPi(err.phi()));
+  const double c = std::cos(predicted.phi()), s = std::sin(predicted.phi());
+  Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
+  J.topLeftCorner<2, 2>() << c, s, -s, c;
+  const Eigen::Matrix3d S = J * measured_cov * J.transpose() + drift_cov;
+  const Eigen::LLT<Eigen::Matrix3d> llt(0.5 * (S + S.transpose()));
+  if (!S.allFinite() || !e.allFinite() || llt.info() != Eigen::Success)
+    return std::numeric_limits<double>::infinity();
+  return e.dot(llt.solve(e));
+}
+
+LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode& newest,
+                     const LoopClosureParams& p, const PlicpParams& plicp)
+{
+  if (!old.scan || !newest.scan)
+    throw std::invalid_argument("verifyLoop: node " + std::to_string(old.scan ? newest.id : old.id) +
+                                " has no scan");
+  if (old.id == newest.id)
+    throw std::invalid_argument("verifyLoop: node " + std::to_string(old.id) + " paired with itself");
+  LoopCheck c;
+  c.from = old.id;
+  c.to = newest.id;
+  const CPose2D& from_pose = graph.pose(old.id);  // both throw for a missing node
+  const CPose2D& to_pose = graph.pose(newest.id);
+  c.distance = (to_pose.translation() - from_pose.translation()).norm();
+  c.path_gap = std::abs(newest.path_length - old.path_length);
+  c.predicted = to_pose - from_pose;
+
+  // PLICP works in the sensor frame (the mounting is the same: matchScans checks it).
+  const CPose2D& mount = old.scan->scan.sensor_pose;
+  c.match = matchScans(*old.scan, newest.scan->scan, sensorMotion(mount, c.predicted), plicp);
+  if (c.match.status != MatchStatus::Converged) return c;  // verdict MatchFailed
+  c.inlier_fraction = c.match.cur_valid_rays == 0
+                          ? 0.0
+                          : static_cast<double>(c.match.correspondences) / c.match.cur_valid_rays;
+  const CPose2D measured = vehicleMotion(mount, c.match.pose);
+  const Eigen::Matrix3d cov = vehicleMotionCovariance(mount, c.match.pose, c.match.covariance);
+  c.mahalanobis2 = loopMahalanobis2(c.predicted, measured, cov, driftCovariance(c.path_gap, p));
+  if (c.inlier_fraction < p.min_inlier_fraction)
+    c.verdict = LoopCheck::Verdict::PoorOverlap;
+  else if (!(c.mahalanobis2 <= p.chi2_gate))
+    c.verdict = LoopCheck::Verdict::GateRejected;
+  else
+  {
+    c.verdict = LoopCheck::Verdict::Accepted;
+    c.edge = TrackerEdge{old.id, newest.id, measured, informationFromCovariance(cov), EdgeKind::Loop};
+  }
+  return c;
+}
+
+std::vector<LoopCheck> checkLoops(const PoseGraph& graph, const LoopNode& newest,
+                                  const std::function<LoopNode(size_t)>& node,
+                                  const LoopClosureParams& p, const PlicpParams& plicp)
+{
+  std::vector<LoopCheck> checks;
+  for (const size_t id : loopCandidates(graph, newest.id, p))
+    checks.push_back(verifyLoop(graph, node(id), newest, p, plicp));
+  return checks;
+}
+
+}  // namespace swslam
