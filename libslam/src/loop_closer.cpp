@@ -43,8 +43,9 @@ std::vector<size_t> loopCandidates(const PoseGraph& graph, size_t newest, const 
   // The node map is ordered by id: walk the ids old enough, stop past the last one.
   std::vector<std::pair<double, size_t>> near;
   const auto& nodes = graph.network().nodes;
-  for (auto it = nodes.begin(); it != nodes.end() && it->first < newest && it->first + gap <= newest; ++it)
+  for (auto it = nodes.begin(); it != nodes.end() && it->first < newest; ++it)
   {
+    if (it->first + gap > newest) break;
     const double d = (it->second.translation() - here.translation()).norm();
     if (d <= p.max_distance && !linked(it->first)) near.emplace_back(d, it->first);
   }
