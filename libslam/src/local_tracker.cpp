@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace swslam
@@ -87,6 +88,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
 {
   const Scan scan = scanFromObservation(obs, tracking_.min_range);
   TrackingStep step;
+  step.valid_rays = scan.size();
   if (keyframes_.empty())
   {
     addKeyframe(scan, CPose2D());
@@ -98,7 +100,9 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   // the previous motion; odometry, when present, is the better prediction).
   const CPose2D motion = odometry_increment ? *odometry_increment : last_motion_;
   const CPose2D predicted = relative_ + motion;
+  const auto t0 = std::chrono::steady_clock::now();
   step.match = matchScans(*last.scan, scan, sensorMotion(last.sensor_pose, predicted), plicp_);
+  step.match_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CPose2D rel = predicted;
   if (step.match.ok())
   {
@@ -128,11 +132,14 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   }
   else
     step.edges.push_back(priorEdge(previous, node));
+  // Only recent nodes: older ones within reach are loop candidates, verified by the graph.
   std::vector<std::pair<double, size_t>> near;
-  for (const auto& kf : keyframes_)
+  const size_t gap = static_cast<size_t>(tracking_.dense_max_index_gap);
+  for (size_t id = node.id > gap ? node.id - gap : 0; id < prev_id; ++id)
   {
+    const Keyframe& kf = keyframes_[id];
     const double d = (kf.pose.translation() - node.pose.translation()).norm();
-    if (kf.id != node.id && kf.id != prev_id && d <= tracking_.dense_radius) near.emplace_back(d, kf.id);
+    if (d <= tracking_.dense_radius) near.emplace_back(d, kf.id);
   }
   std::sort(near.begin(), near.end());
   near.resize(std::min(near.size(), static_cast<size_t>(tracking_.max_dense_edges)));

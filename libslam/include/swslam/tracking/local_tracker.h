@@ -57,6 +57,8 @@ struct TrackingStep
   bool new_keyframe = false;
   std::vector<TrackerEdge> edges;  ///< the new node's edges
   size_t dense_matches = 0;        ///< dense-neighbour matches tried for the new node
+  double match_time = 0;           ///< [s] spent matching against the keyframe
+  size_t valid_rays = 0;           ///< valid rays of this scan
 };
 
 class LocalTracker

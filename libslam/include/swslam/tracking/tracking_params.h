@@ -14,6 +14,7 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double keyframe_rotation = 10.0 * M_PI / 180;  ///< [rad] ...or this turn (ini: keyframe_rotation_DEG)
   double dense_radius = 4.0;           ///< [m] a new node is matched with every node this close (Fig. 2)
   int max_dense_edges = 8;             ///< at most this many dense edges per node, nearest first
+  int dense_max_index_gap = 30;        ///< dense edges only to the last this many nodes (older: loops)
   double lost_prior_sigma_xy = 1.0;    ///< [m] std of the weak prior edge when a node is made without a match
   double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
 
