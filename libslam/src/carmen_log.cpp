@@ -239,4 +239,10 @@ bool CarmenLogReader::next(CarmenRecord& record)
   return false;
 }
 
+double CarmenLogReader::fractionRead() const
+{
+  const double total = static_cast<double>(file_.getTotalBytesCount());
+  return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
+}
+
 }  // namespace swslam

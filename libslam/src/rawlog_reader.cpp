@@ -1,5 +1,7 @@
 #include "swslam/rawlog_reader.h"
 
+#include <algorithm>
+
 #include <mrpt/core/exceptions.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -63,6 +65,12 @@ bool RawlogReader::next(RawlogItem& item)
   item = std::move(pending_.front());
   pending_.pop_front();
   return true;
+}
+
+double RawlogReader::fractionRead() const
+{
+  const double total = static_cast<double>(file_.getTotalBytesCount());
+  return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
 }
 
 }  // namespace swslam

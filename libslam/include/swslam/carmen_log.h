@@ -136,6 +136,8 @@ class CarmenLogReader
   /** Next converted observation; false at the end of the file. */
   bool next(CarmenRecord& record);
   const CarmenStats& stats() const { return stats_; }
+  /** Fraction of the file read so far, in [0, 1] (for progress and ETA). */
+  double fractionRead() const;
 
  private:
   void prescan();

@@ -51,6 +51,8 @@ class RawlogReader
 
   /** Number of top-level rawlog entries read so far. */
   size_t entriesRead() const { return entries_; }
+  /** Fraction of the file read so far, in [0, 1] (for progress and ETA). */
+  double fractionRead() const;
   const std::string& path() const { return path_; }
 
  private:

@@ -1,0 +1,68 @@
+#pragma once
+// Where a run's scans come from: an MRPT rawlog (either format) or a CARMEN log, read one
+// scan at a time. Odometry found in the log (CObservationOdometry readings or rawlog actions)
+// becomes each scan's odometry increment since the previous scan, unless disabled.
+
+#include <swslam/carmen_log.h>
+#include <swslam/rawlog_reader.h>
+#include <swslam/system/messages.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace swslam
+{
+struct ScanSourceOptions
+{
+  bool use_odometry = true;
+  std::string sensor_label;  ///< only scans of this sensor; empty: the first one seen
+};
+
+/** Counts of what a source skipped. */
+struct ScanSourceStats
+{
+  size_t scans = 0;              ///< scans returned
+  size_t other_sensors = 0;      ///< scans of another sensor label, skipped
+  size_t other_observations = 0; ///< observations that are neither scans nor odometry
+  size_t odometry = 0;           ///< odometry readings/actions used
+};
+
+class ScanSource
+{
+ public:
+  virtual ~ScanSource() = default;
+  /** The next scan; false at the end. Throws RawlogError (rawlogs) or std::runtime_error
+   * naming the problem when the input is corrupt: what was returned before stays valid. */
+  virtual bool next(ScanInput& out) = 0;
+  virtual const ScanSourceStats& stats() const = 0;
+  virtual std::string describe() const = 0;
+  /** Fraction of the input read, in [0, 1]. */
+  virtual double fractionRead() const = 0;
+};
+
+/** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), else as a
+ * rawlog. Throws std::runtime_error if it cannot be opened. */
+std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
+                                           const CarmenParams& carmen);
+
+/** Turns odometry readings between scans into per-scan increments. */
+class OdometryIntegrator
+{
+ public:
+  /** An absolute odometry reading (CObservationOdometry). */
+  void addReading(const mrpt::poses::CPose2D& odometry);
+  /** A relative motion (rawlog action). */
+  void addIncrement(const mrpt::poses::CPose2D& increment);
+  /** The motion since the previous call (nothing if no odometry arrived in between or
+   * before the previous scan); starts a new interval. */
+  std::optional<mrpt::poses::CPose2D> takeIncrement();
+
+ private:
+  std::optional<mrpt::poses::CPose2D> last_reading_;   ///< latest absolute reading
+  std::optional<mrpt::poses::CPose2D> reading_at_scan_;  ///< absolute reading at the last scan
+  mrpt::poses::CPose2D accumulated_;  ///< actions since the last scan
+  bool has_actions_ = false;
+};
+
+}  // namespace swslam
