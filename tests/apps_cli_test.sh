@@ -3,7 +3,7 @@
 set -uo pipefail
 bin=$2/apps
 fail=0
-for app in "$bin"/swslam-*; do
+for app in "$bin"/swslam "$bin"/swslam-*; do
   [[ -x $app ]] || continue
   name=$(basename "$app")
   if "$app" --no-such-flag > /dev/null 2>&1; then

@@ -19,7 +19,9 @@ std::vector<std::pair<std::string, Options*>> modulesOf(Params& p)
           {"tracking", &p.tracking},
           {"carmen", &p.carmen},
           {"graph_optimizer", &p.graph_optimizer},
-          {"map", &p.map}};
+          {"loop_closure", &p.loop_closure},
+          {"map", &p.map},
+          {"system", &p.system}};
 }
 }  // namespace
 

@@ -4,8 +4,10 @@
 
 #include <swslam/carmen_log.h>
 #include <swslam/graph_optimizer_params.h>
+#include <swslam/loop/loop_closure_params.h>
 #include <swslam/map/map_params.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/system/system_options.h>
 #include <swslam/tracking/tracking_params.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -22,7 +24,9 @@ struct SystemParams
   TrackingParams tracking;  ///< [tracking]
   CarmenParams carmen;  ///< [carmen]
   GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
+  LoopClosureParams loop_closure;  ///< [loop_closure]
   MapParams map;        ///< [map]
+  SystemOptions system;  ///< [system]
 
   /** Each module's section name and parameters, in file order: the one list every load,
    * save and section check goes through. */

@@ -1,0 +1,42 @@
+// swslam: sliding-window 2D LiDAR SLAM on a rawlog or CARMEN log (see README and doc/system.md).
+#include "cli.h"
+
+#include <swslam/system/offline_run.h>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  TCLAP::CmdLine cmd("swslam: robust sliding-window 2D LiDAR SLAM (offline replay)", ' ', "0.1");
+  TCLAP::ValueArg<std::string> config("c", "config", "Configuration (.ini)", true, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> input("i", "input", "MRPT rawlog, or CARMEN log (.log, .log.gz, .clf)",
+                                     true, "", "LOG", cmd);
+  TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created if missing)", true, "",
+                                      "DIR", cmd);
+  TCLAP::ValueArg<std::string> gt("g", "ground-truth", "Reference trajectory (TUM) for ATE/RPE", false,
+                                  "", "GT.tum", cmd);
+  TCLAP::ValueArg<std::string> label("", "sensor-label", "Use only scans of this sensor", false, "",
+                                     "LABEL", cmd);
+  TCLAP::ValueArg<size_t> max_scans("", "max-scans", "Stop after N scans (0: all)", false, 0, "N", cmd);
+  TCLAP::ValueArg<double> rate("", "realtime-factor", "Pace the replay at this multiple of the log's rate (0: as fast as possible)",
+                               false, 0, "X", cmd);
+  TCLAP::SwitchArg deterministic("d", "deterministic", "One thread, fixed order: repeatable results", cmd);
+  TCLAP::SwitchArg no_odometry("", "no-odometry", "Ignore odometry in the log (laser only)", cmd);
+  TCLAP::SwitchArg no_progress("q", "quiet", "No progress bar", cmd);
+  TCLAP::SwitchArg no_render("", "no-render", "Skip render.png (no OpenGL needed)", cmd);
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+
+  swslam::OfflineRunOptions o;
+  o.config = config.getValue();
+  o.input = input.getValue();
+  o.output = output.getValue();
+  o.ground_truth = gt.getValue();
+  o.sensor_label = label.getValue();
+  o.max_scans = max_scans.getValue();
+  o.realtime_factor = rate.getValue();
+  o.deterministic = deterministic.getValue();
+  o.use_odometry = !no_odometry.getValue();
+  o.progress = !no_progress.getValue();
+  o.render = !no_render.getValue();
+  return swslam::runOffline(o, std::cout, std::cerr);
+}

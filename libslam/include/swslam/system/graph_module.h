@@ -1,0 +1,65 @@
+#pragma once
+// The graph optimization module (paper Fig. 1, sec. III): adds each new node with its edges,
+// optimizes the sliding window, looks for loops (index gap + distance), verifies them by
+// PLICP and a chi-square gate, and on an accepted loop optimizes the whole graph.
+//
+// Threading: one thread (the graph thread, or the deterministic loop) calls addNode() and
+// optimizeAll(); graphCopy() and the counters may be called from any thread.
+
+#include <swslam/graph_optimizer.h>
+#include <swslam/graph_optimizer_params.h>
+#include <swslam/loop/loop_closer.h>
+#include <swslam/pose_graph.h>
+#include <swslam/system/messages.h>
+
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace swslam
+{
+/** What one graph step did, and what the other modules must learn from it. */
+struct GraphStep
+{
+  size_t scan = 0;
+  size_t node = 0;
+  size_t loops_checked = 0, loops_accepted = 0;
+  size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
+  bool full = false;          ///< the whole graph was optimized
+  OptimizationReport report;
+  PoseUpdate poses;                ///< optimized node poses (for tracking)
+  std::optional<MapInsert> insert;  ///< for the map: the new node's scan, at its optimized pose...
+  MapReinsert reinsert;             ///< ...then the optimized poses (moved nodes are re-inserted)
+};
+
+class GraphModule
+{
+ public:
+  GraphModule(const GraphOptimizerParams& graph, const LoopClosureParams& loops,
+              const PlicpParams& plicp);
+
+  /** Adds the node (its pose re-based on the graph's estimate of the previous node), its
+   * edges and any verified loop, then optimizes the window, or everything after a loop. */
+  GraphStep addNode(const NewNode& node);
+
+  /** Optimizes the whole graph (e.g. at the end of a run). */
+  GraphStep optimizeAll(size_t scan);
+
+  PoseGraph graphCopy() const;
+  size_t loopCount() const;
+
+ private:
+  void addEdge(const TrackerEdge& e, GraphStep& step);
+  size_t closeLoops(size_t id, GraphStep& step);
+  void optimize(bool full, GraphStep& step);
+
+  const GraphOptimizerParams graph_params_;
+  const LoopClosureParams loop_params_;
+  const PlicpParams plicp_params_;
+  std::vector<LoopNode> nodes_;  ///< by node id; only the owning thread
+  mutable std::mutex mutex_;
+  PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
+  size_t loops_ = 0;   ///< guarded by mutex_
+};
+
+}  // namespace swslam

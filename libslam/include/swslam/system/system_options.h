@@ -1,0 +1,18 @@
+#pragma once
+// Parameters of the system as a whole (how the three modules run), section [system].
+
+#include <mrpt/config/CLoadableOptions.h>
+
+namespace swslam
+{
+struct SystemOptions : public mrpt::config::CLoadableOptions
+{
+  int input_queue_capacity = 200;  ///< threaded mode: scans waiting for tracking at most (feed() waits)
+  bool final_full_optimization = true;  ///< optimize the whole graph once the input ends
+  int max_printed_warnings = 10;   ///< skipped-scan messages printed per kind; all are counted
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+}  // namespace swslam

@@ -1,0 +1,139 @@
+#include "swslam/system/offline_run.h"
+
+#include "swslam/rawlog_reader.h"
+#include "swslam/system/progress_bar.h"
+#include "swslam/system/run_outputs.h"
+#include "swslam/system/scan_source.h"
+#include "swslam/system/slam_system.h"
+#include "swslam/system/stop_signal.h"
+#include "swslam/eval/report.h"
+
+#include <chrono>
+#include <malloc.h>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <thread>
+
+namespace swslam
+{
+namespace
+{
+/** Prints the first few skip messages of each kind; counts all. */
+class SkipReporter
+{
+ public:
+  SkipReporter(std::ostream& err, int max_printed) : err_(err), max_(max_printed) {}
+  void report(FeedStatus kind, size_t input_index, const std::string& why)
+  {
+    const size_t n = ++counts_[kind];
+    if (n <= static_cast<size_t>(max_))
+      err_ << "swslam: skipped input scan " << input_index << ": " << why << "\n";
+    if (n == static_cast<size_t>(max_) + 1) err_ << "swslam: (further skips of this kind are only counted)\n";
+  }
+
+ private:
+  std::ostream& err_;
+  int max_;
+  std::map<FeedStatus, size_t> counts_;
+};
+}  // namespace
+
+int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err)
+{
+  StopSignal stop;
+  SystemParams params;
+  std::unique_ptr<ScanSource> source;
+  std::vector<StampedPose> truth;
+  try
+  {
+    params = loadSystemParams(opts.config);
+    if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
+    source = openScanSource(opts.input, ScanSourceOptions{opts.use_odometry, opts.sensor_label}, params.carmen);
+    std::filesystem::create_directories(opts.output);
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: " << e.what() << "\n";
+    return kExitUsage;
+  }
+
+  const auto t0 = std::chrono::steady_clock::now();
+  auto slam = std::make_unique<SlamSystem>(params, opts.deterministic ? RunMode::Deterministic : RunMode::Threaded);
+  ProgressBar bar(stderr, opts.progress && isTerminal(stderr));
+  SkipReporter skips(err, params.system.max_printed_warnings);
+  int code = kExitOk;
+  size_t read = 0;
+  try
+  {
+    ScanInput in;
+    std::optional<double> first_stamp;
+    while (!stop.requested() && (opts.max_scans == 0 || read < opts.max_scans) && source->next(in))
+    {
+      if (opts.realtime_factor > 0)
+      {
+        // Pacing, as a live sensor would deliver the scans.
+        const double t = mrpt::Clock::toDouble(in.observation->timestamp);
+        if (!first_stamp) first_stamp = t;
+        const double due = std::max(0.0, (t - *first_stamp) / opts.realtime_factor);
+        std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(std::min(due, 3600.0))));
+      }
+      const FeedResult r = slam->feed(std::move(in));
+      read++;
+      if (r.status == FeedStatus::Stopped) break;
+      if (!r.ok()) skips.report(r.status, read - 1, r.message);
+      const SystemStatus st = slam->status();
+      bar.update(source->fractionRead(), st.scans,
+                 std::to_string(st.nodes) + " nodes " + std::to_string(st.loops) + " loops");
+    }
+  }
+  catch (const std::exception& e)
+  {
+    bar.done();
+    err << "swslam: input stopped after " << read << " scans: " << e.what()
+        << "\nswslam: writing the outputs of what was read\n";
+    code = kExitInputError;
+  }
+  slam->finish();
+  bar.done();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (stop.requested())
+  {
+    err << "swslam: stopped by signal " << stop.signal() << " after " << read
+        << " scans; writing the outputs\n";
+    code = kExitInterrupted;
+  }
+  if (!slam->error().empty())
+  {
+    err << "swslam: " << slam->error() << "\n";
+    if (code == kExitOk) code = kExitModuleError;
+  }
+
+  const RunResults results = slam->results();
+  const mrpt::maps::COccupancyGridMap2D grid = slam->mapSnapshot();
+  // The modules' memory is not needed for writing: give it back to the system before the
+  // off-screen render allocates its own (this keeps the run's peak memory down).
+  slam.reset();
+  malloc_trim(0);
+  RunSummary summary;
+  try
+  {
+    summary = summarizeRun(results, wall, truth.empty() ? nullptr : &truth);
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: ground truth: " << e.what() << "\n";
+    summary = summarizeRun(results, wall);
+  }
+  std::string text = "# swslam on " + source->describe() + " (" +
+                     (opts.deterministic ? "deterministic" : "threaded") + ")\n" + formatRunSummary(summary);
+  const auto problems = writeRunOutputs(opts.output, results, grid, params.map, text, opts.render);
+  for (const OutputProblem& p : problems) err << "swslam: could not write " << p.file << ": " << p.message << "\n";
+  if (!problems.empty() && code == kExitOk) code = kExitOutputError;
+  out << text << "# outputs in " << opts.output << "/ (map.png, render.png, trajectory.tum, stats.csv, summary.md)\n";
+  return code;
+}
+
+}  // namespace swslam

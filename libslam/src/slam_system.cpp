@@ -1,0 +1,327 @@
+#include "swslam/system/slam_system.h"
+
+#include "swslam/scan.h"
+
+#include <mrpt/system/os.h>
+
+#include <chrono>
+#include <cmath>
+#include <pthread.h>
+
+namespace swslam
+{
+using mrpt::poses::CPose2D;
+
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void nameThisThread(const char* name) { pthread_setname_np(pthread_self(), name); }
+}  // namespace
+
+SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
+    : params_(params),
+      mode_(mode),
+      tracker_(params.tracking, params.plicp),
+      graph_(params.graph_optimizer, params.loop_closure, params.plicp),
+      map_(params.map),
+      scan_queue_(static_cast<size_t>(params.system.input_queue_capacity))
+{
+  if (params.tracking.dense_max_index_gap > params.loop_closure.min_index_gap)
+    throw std::invalid_argument(
+        "config: [tracking] dense_max_index_gap must not exceed [loop_closure] min_index_gap "
+        "(a pair of nodes is either a dense neighbour or a loop candidate)");
+  if (mode_ == RunMode::Threaded)
+  {
+    tracking_thread_ = std::thread([this] { trackingLoop(); });
+    graph_thread_ = std::thread([this] { graphLoop(); });
+    map_thread_ = std::thread([this] { mapLoop(); });
+  }
+}
+
+SlamSystem::~SlamSystem() { finish(); }
+
+FeedResult SlamSystem::feed(ScanInput input)
+{
+  if (finished_ || !error().empty()) return {FeedStatus::Stopped, "the system has stopped"};
+  auto skip = [&](FeedStatus s, const std::string& why) {
+    std::lock_guard<std::mutex> lock(results_mutex_);
+    status_.skipped++;
+    return FeedResult{s, why};
+  };
+  if (!input.observation) return skip(FeedStatus::BadGeometry, "no observation");
+  const double t = mrpt::Clock::toDouble(input.observation->timestamp);
+  if (!std::isfinite(t) || t <= last_timestamp_)
+  {
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "timestamp %.6f s is %s the previous scan's (%.6f s)", t,
+                  t == last_timestamp_ ? "equal to" : "before", last_timestamp_);
+    return skip(FeedStatus::TimestampNotIncreasing, buf);
+  }
+  try
+  {
+    (void)scanFromObservation(*input.observation, params_.tracking.min_range);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    return skip(FeedStatus::BadGeometry, e.what());
+  }
+  last_timestamp_ = t;
+  const size_t index = fed_++;
+  if (mode_ == RunMode::Deterministic)
+  {
+    trackOne(input, index);
+    return {};
+  }
+  if (!scan_queue_.push({index, std::move(input)})) return {FeedStatus::Stopped, "the system has stopped"};
+  return {};
+}
+
+void SlamSystem::trackOne(const ScanInput& input, size_t index)
+{
+  {
+    std::lock_guard<std::mutex> lock(updates_mutex_);
+    for (const auto& [id, pose] : pending_updates_)
+      if (id < tracker_.keyframes().size()) tracker_.setKeyframePose(id, pose);
+    pending_updates_.clear();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const TrackingStep step = tracker_.process(*input.observation, input.odometry_increment);
+  const double seconds = secondsSince(t0);
+
+  ScanStats row;
+  row.scan = index;
+  row.timestamp = mrpt::Clock::toDouble(input.observation->timestamp);
+  row.source = step.source;
+  row.valid_rays = step.valid_rays;
+  row.correspondences = step.match.correspondences;
+  row.match_sq_residuals = step.match.sum_sq_residuals;
+  row.match_ms = 1e3 * step.match_time;
+  row.tracking_ms = 1e3 * seconds;
+  row.keyframe = step.keyframe;
+  row.new_node = step.new_keyframe;
+  {
+    std::lock_guard<std::mutex> lock(results_mutex_);
+    stats_.push_back(row);
+    trajectory_.push_back({row.timestamp, step.keyframe, step.relative, step.pose});
+    if (step.new_keyframe) keyframe_times_.push_back(row.timestamp);
+    status_.scans++;
+    status_.nodes = tracker_.keyframes().size();
+    if (step.source == TrackingSource::Odometry || step.source == TrackingSource::ConstantMotion)
+      status_.fallbacks++;
+    status_.last_source = step.source;
+    status_.last_match = step.match.status;
+    status_.last_correspondences = step.match.correspondences;
+    status_.last_valid_rays = step.valid_rays;
+  }
+  if (!step.new_keyframe) return;
+  NewNode node;
+  node.scan = index;
+  node.keyframe = tracker_.keyframes().back();
+  node.observation = input.observation;
+  node.edges = step.edges;
+  if (mode_ == RunMode::Deterministic)
+    graphOne(node);
+  else
+    node_queue_.push(std::move(node));
+}
+
+void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
+{
+  {
+    std::lock_guard<std::mutex> lock(updates_mutex_);
+    for (const auto& [id, pose] : step.poses) pending_updates_[id] = pose;
+  }
+  {
+    std::lock_guard<std::mutex> lock(results_mutex_);
+    if (step.scan < stats_.size())
+    {
+      ScanStats& row = stats_[step.scan];
+      row.graph_ms += 1e3 * seconds;
+      row.active_sq_residuals = step.report.active_sq_residuals;
+      row.loops += step.loops_accepted;
+      row.full_optimization = row.full_optimization || step.full;
+    }
+    status_.loops += step.loops_accepted;
+  }
+  auto toMap = [this](MapMessage m) {
+    if (mode_ == RunMode::Deterministic)
+      mapOne(m);
+    else
+      map_queue_.push(std::move(m));
+  };
+  if (step.insert) toMap(*step.insert);
+  if (!step.reinsert.poses.empty()) toMap(step.reinsert);
+}
+
+void SlamSystem::graphOne(const NewNode& node)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const GraphStep step = graph_.addNode(node);
+  applyGraphStep(step, secondsSince(t0));
+}
+
+void SlamSystem::mapOne(const MapMessage& message)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const MapStep step = map_.handle(message);
+  const double seconds = secondsSince(t0);
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  if (step.scan < stats_.size()) stats_[step.scan].map_ms += 1e3 * seconds;
+}
+
+void SlamSystem::fail(const std::string& module, const std::string& what)
+{
+  {
+    std::lock_guard<std::mutex> lock(results_mutex_);
+    if (error_.empty()) error_ = module + ": " + what;
+  }
+  closeAll();
+}
+
+void SlamSystem::closeAll()
+{
+  scan_queue_.close();
+  node_queue_.close();
+  map_queue_.close();
+}
+
+void SlamSystem::trackingLoop()
+{
+  nameThisThread("swslam-track");
+  try
+  {
+    while (auto item = scan_queue_.pop()) trackOne(item->second, item->first);
+  }
+  catch (const std::exception& e)
+  {
+    fail("tracking", e.what());
+  }
+  node_queue_.close();
+}
+
+void SlamSystem::graphLoop()
+{
+  nameThisThread("swslam-graph");
+  try
+  {
+    while (auto node = node_queue_.pop()) graphOne(*node);
+  }
+  catch (const std::exception& e)
+  {
+    fail("graph optimization", e.what());
+  }
+}
+
+void SlamSystem::mapLoop()
+{
+  nameThisThread("swslam-map");
+  try
+  {
+    std::vector<MapMessage> batch;
+    while (auto first = map_queue_.pop())
+    {
+      // Everything waiting is taken at once: a map thread that fell behind re-inserts once
+      // for consecutive optimizations.
+      batch.clear();
+      batch.push_back(std::move(*first));
+      while (auto next = map_queue_.tryPop()) batch.push_back(std::move(*next));
+      for (size_t i = 0; i < batch.size(); ++i)
+      {
+        auto* re = std::get_if<MapReinsert>(&batch[i]);
+        while (re && i + 1 < batch.size() && std::holds_alternative<MapReinsert>(batch[i + 1]))
+          MapModule::merge(*re, std::move(std::get<MapReinsert>(batch[++i])));
+        mapOne(re ? MapMessage(std::move(*re)) : batch[i]);
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    fail("map construction", e.what());
+  }
+}
+
+void SlamSystem::finish()
+{
+  if (finished_) return;
+  finished_ = true;
+  if (mode_ == RunMode::Threaded)
+  {
+    scan_queue_.close();
+    if (tracking_thread_.joinable()) tracking_thread_.join();  // closes node_queue_
+    if (graph_thread_.joinable()) graph_thread_.join();
+  }
+  if (params_.system.final_full_optimization && error().empty())
+  {
+    try
+    {
+      size_t last_scan = 0;
+      {
+        std::lock_guard<std::mutex> lock(results_mutex_);
+        last_scan = stats_.empty() ? 0 : stats_.size() - 1;
+      }
+      const auto t0 = std::chrono::steady_clock::now();
+      const GraphStep step = graph_.optimizeAll(last_scan);
+      applyGraphStep(step, secondsSince(t0));
+    }
+    catch (const std::exception& e)
+    {
+      fail("final optimization", e.what());
+    }
+  }
+  if (mode_ == RunMode::Threaded)
+  {
+    map_queue_.close();
+    if (map_thread_.joinable()) map_thread_.join();
+  }
+  closeAll();
+}
+
+std::string SlamSystem::error() const
+{
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  return error_;
+}
+
+SystemStatus SlamSystem::status() const
+{
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  SystemStatus s = status_;
+  s.queued = scan_queue_.size();
+  return s;
+}
+
+RunResults SlamSystem::results() const
+{
+  RunResults r;
+  r.graph = graph_.graphCopy();
+  r.loops = graph_.loopCount();
+  r.map_bytes = map_.builder().bytes();
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  r.stats = stats_;
+  r.skipped = status_.skipped;
+  // Rows without an optimization carry the last one's residuals (Fig. 7 is a curve).
+  double active = 0;
+  for (ScanStats& row : r.stats)
+  {
+    if (row.graph_ms > 0) active = row.active_sq_residuals;
+    row.active_sq_residuals = active;
+  }
+  for (const TrajectoryRecord& rec : trajectory_)
+  {
+    // A keyframe the graph has not received yet (threaded, mid-run): the tracked pose.
+    r.trajectory.push_back({rec.t, r.graph.hasNode(rec.keyframe)
+                                       ? r.graph.pose(rec.keyframe) + rec.relative
+                                       : rec.tracked});
+  }
+  for (size_t id = 0; id < keyframe_times_.size(); ++id)
+    if (r.graph.hasNode(id)) r.keyframes.push_back({keyframe_times_[id], r.graph.pose(id)});
+  return r;
+}
+
+mrpt::maps::COccupancyGridMap2D SlamSystem::mapSnapshot() const { return map_.builder().snapshot(); }
+
+}  // namespace swslam

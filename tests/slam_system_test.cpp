@@ -1,0 +1,170 @@
+// The whole system: deterministic repeatability, threaded tracking, loop closure, bad input.
+#include <swslam/eval/report.h>
+#include <swslam/system/scan_source.h>
+#include <swslam/system/slam_system.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+const std::string kLake = std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short";
+
+SystemParams defaultParams() { return loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini"); }
+
+/** Feeds the first `n` scans of lake-short. */
+void feedLake(SlamSystem& slam, size_t n)
+{
+  auto src = openScanSource(kLake + ".rawlog", ScanSourceOptions{}, CarmenParams());
+  ScanInput in;
+  for (size_t i = 0; i < n && src->next(in); i++) ASSERT_TRUE(slam.feed(in).ok());
+}
+
+double ate(const RunResults& r)
+{
+  return eval::evaluateTrajectory(r.trajectory, readTum(kLake + ".gt.tum"), 0.01).ate.position.rmse;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr scanAt(const test::World& world, const CPose2D& pose,
+                                               double t, std::mt19937& rng)
+{
+  auto obs = std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+      test::simulateObservation(world, pose, 541, 1.5 * M_PI, 30, 0.01, rng));
+  obs->timestamp = mrpt::Clock::fromDouble(t);
+  return obs;
+}
+}  // namespace
+
+TEST(SlamSystem, DeterministicRunsAreBitIdentical)
+{
+  RunResults a, b;
+  mrpt::maps::COccupancyGridMap2D map_a, map_b;
+  for (auto* out : {&a, &b})
+  {
+    SlamSystem slam(defaultParams(), RunMode::Deterministic);
+    feedLake(slam, 800);
+    slam.finish();
+    *out = slam.results();
+    (out == &a ? map_a : map_b) = slam.mapSnapshot();
+  }
+  ASSERT_EQ(a.trajectory.size(), 800u);
+  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+  for (size_t i = 0; i < a.trajectory.size(); i++)
+  {
+    ASSERT_EQ(a.trajectory[i].pose.x(), b.trajectory[i].pose.x()) << i;
+    ASSERT_EQ(a.trajectory[i].pose.y(), b.trajectory[i].pose.y()) << i;
+    ASSERT_EQ(a.trajectory[i].pose.phi(), b.trajectory[i].pose.phi()) << i;
+  }
+  EXPECT_EQ(a.graph.edgeCount(), b.graph.edgeCount());
+  ASSERT_EQ(map_a.getSizeX(), map_b.getSizeX());
+  ASSERT_EQ(map_a.getSizeY(), map_b.getSizeY());
+  EXPECT_EQ(map_a.getRawMap(), map_b.getRawMap());
+  EXPECT_LT(ate(a), 0.1);
+}
+
+TEST(SlamSystem, ThreadedRunTracksTheLogAndFillsEveryStat)
+{
+  SlamSystem slam(defaultParams(), RunMode::Threaded);
+  feedLake(slam, 800);
+  slam.finish();
+  EXPECT_EQ(slam.error(), "");
+  const RunResults r = slam.results();
+  ASSERT_EQ(r.trajectory.size(), 800u);
+  ASSERT_EQ(r.stats.size(), 800u);
+  EXPECT_LT(ate(r), 0.1);
+  size_t nodes = 0, graph_runs = 0, map_runs = 0;
+  for (const ScanStats& s : r.stats)
+  {
+    nodes += s.new_node;
+    graph_runs += s.graph_ms > 0;
+    map_runs += s.map_ms > 0;
+  }
+  EXPECT_EQ(nodes, r.graph.nodeCount());
+  EXPECT_GE(graph_runs, nodes - 1);  // every node but the first is optimized
+  EXPECT_GT(map_runs, 0u);
+  EXPECT_EQ(r.keyframes.size(), r.graph.nodeCount());
+  EXPECT_GT(slam.mapSnapshot().getSizeX(), 0u);
+}
+
+TEST(SlamSystem, BackwardDuplicateAndMalformedScansAreSkippedWithAReason)
+{
+  SlamSystem slam(defaultParams(), RunMode::Deterministic);
+  test::World world = test::roomWorld();
+  std::mt19937 rng(3);
+  ASSERT_TRUE(slam.feed({scanAt(world, CPose2D(0, 0, 0), 10.0, rng), {}}).ok());
+  const FeedResult dup = slam.feed({scanAt(world, CPose2D(0, 0, 0), 10.0, rng), {}});
+  EXPECT_EQ(dup.status, FeedStatus::TimestampNotIncreasing);
+  EXPECT_NE(dup.message.find("equal"), std::string::npos) << dup.message;
+  const FeedResult back = slam.feed({scanAt(world, CPose2D(0, 0, 0), 9.0, rng), {}});
+  EXPECT_EQ(back.status, FeedStatus::TimestampNotIncreasing);
+  EXPECT_NE(back.message.find("before"), std::string::npos) << back.message;
+  auto bad = scanAt(world, CPose2D(0, 0, 0), 11.0, rng);
+  bad->aperture = 0;
+  EXPECT_EQ(slam.feed({bad, {}}).status, FeedStatus::BadGeometry);
+  EXPECT_EQ(slam.feed({nullptr, {}}).status, FeedStatus::BadGeometry);
+  ASSERT_TRUE(slam.feed({scanAt(world, CPose2D(0.1, 0, 0), 11.0, rng), {}}).ok());
+  slam.finish();
+  EXPECT_EQ(slam.status().skipped, 4u);
+  EXPECT_EQ(slam.results().trajectory.size(), 2u);
+  EXPECT_EQ(slam.feed({scanAt(world, CPose2D(0.2, 0, 0), 12.0, rng), {}}).status, FeedStatus::Stopped);
+}
+
+TEST(SlamSystem, OpenWaterIsTrackedThroughWithoutAJump)
+{
+  // 1 m/s along x at 20 Hz; from scan 40 to 100 no ray returns (open water), with odometry.
+  SlamSystem slam(defaultParams(), RunMode::Deterministic);
+  test::World world = test::clutteredWorld(5);
+  std::mt19937 rng(4);
+  for (int k = 0; k < 140; k++)
+  {
+    const CPose2D pose(-10 + 0.05 * k, 0, 0);
+    auto obs = scanAt(world, pose, 0.05 * k, rng);
+    if (k >= 40 && k < 100)
+      for (size_t i = 0; i < obs->getScanSize(); i++) obs->setScanRangeValidity(i, false);
+    ASSERT_TRUE(slam.feed({obs, k > 0 ? std::optional<CPose2D>(CPose2D(0.05, 0, 0)) : std::nullopt}).ok());
+  }
+  slam.finish();
+  const RunResults r = slam.results();
+  size_t fallback = 0;
+  for (const ScanStats& s : r.stats) fallback += s.source == TrackingSource::Odometry;
+  EXPECT_GE(fallback, 60u);
+  for (size_t k = 0; k < r.trajectory.size(); k++)
+    EXPECT_NEAR(r.trajectory[k].pose.x(), 0.05 * k, 0.3) << k;  // the map frame is the first pose
+  bool prior = false;
+  for (size_t i = 0; i < r.graph.edgeCount(); i++) prior |= r.graph.edge(i).kind == EdgeKind::OdometryPrior;
+  EXPECT_TRUE(prior);
+}
+
+TEST(SlamSystem, ClosesALoopAroundACircuit)
+{
+  // A 7 m radius circle on the water between the two banks of a cluttered scene: returning
+  // to the start must add verified loop edges, and the trajectory stays on the circle.
+  SystemParams p = defaultParams();
+  SlamSystem slam(p, RunMode::Deterministic);
+  test::World world = test::clutteredWorld(7);
+  std::mt19937 rng(8);
+  const double r = 7, speed = 1.5, dt = 0.05;
+  const int n = static_cast<int>(2 * M_PI * r / (speed * dt)) + 40;
+  std::vector<StampedPose> truth;
+  for (int k = 0; k < n; k++)
+  {
+    const double a = speed * dt * k / r;
+    const CPose2D pose(r * std::sin(a), -10 + r - r * std::cos(a), a);
+    truth.push_back({dt * k, pose});
+    ASSERT_TRUE(slam.feed({scanAt(world, pose, dt * k, rng), {}}).ok());
+  }
+  slam.finish();
+  const RunResults res = slam.results();
+  EXPECT_GT(res.loops, 0u);
+  size_t loop_edges = 0;
+  for (size_t i = 0; i < res.graph.edgeCount(); i++) loop_edges += res.graph.edge(i).kind == EdgeKind::Loop;
+  EXPECT_EQ(loop_edges, res.loops);
+  EXPECT_LT(eval::evaluateTrajectory(res.trajectory, truth, 0.001).ate.position.rmse, 0.1);
+}

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# SIGINT and SIGTERM end a threaded `swslam` run cleanly: the threads are joined and every
+# output is written for the scans processed so far (exit 130). The replay is paced at 10x
+# the log rate (about 6 s) so that the signal arrives mid-run.
+set -uo pipefail
+src=$1 bin=$2/apps
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+total=$(zcat -f "$src/datasets/lake-short/lake-short.gt.tum" | grep -vc '^#')
+for sig in INT TERM; do
+  out=$tmp/$sig
+  "$bin/swslam" -c "$src/config/default.ini" -i "$src/datasets/lake-short/lake-short.rawlog" \
+    -o "$out" -q --realtime-factor 10 > "$tmp/$sig.log" 2>&1 &
+  pid=$!
+  sleep 1.5
+  kill -s "$sig" "$pid"
+  wait "$pid"
+  code=$?
+  if [[ $code -ne 130 ]]; then
+    echo "FAIL: SIG$sig: exit $code (expected 130; did the run end before the signal?)"
+    cat "$tmp/$sig.log"; fail=1; continue
+  fi
+  grep -q "stopped by signal" "$tmp/$sig.log" || { echo "FAIL: SIG$sig: no message"; fail=1; }
+  for f in trajectory.tum keyframes.tum graph.graph stats.csv summary.md map.gridmap.gz map.png map.yaml map.pgm map.bt; do
+    [[ -s $out/$f ]] || { echo "FAIL: SIG$sig: $f missing"; fail=1; }
+  done
+  n=$(grep -vc '^#' "$out/trajectory.tum")
+  if ! ((n > 0 && n < total)); then
+    echo "FAIL: SIG$sig: $n of $total poses written"; fail=1
+  fi
+  ls "$out" | grep -q '\.tmp' && { echo "FAIL: SIG$sig: temporary file left"; fail=1; }
+  echo "SIG$sig: exit $code, $n of $total poses written"
+done
+exit $fail
