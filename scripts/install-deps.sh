@@ -11,6 +11,7 @@ packages=(
   libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
   mrpt-common
   libegl1 libegl-mesa0 libgl1-mesa-dri
+  python3-matplotlib
 )
 if [[ ${1:-} == --with-bench ]]; then
   packages+=(libceres-dev)

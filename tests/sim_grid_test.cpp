@@ -14,7 +14,8 @@ using namespace swslam::sim;
 
 namespace
 {
-/** Random shapes of every kind, sizes and pass-through, some on cell borders. */
+/** Random shapes of every kind, sizes and pass-through, one-sided banks, some shapes on
+ * cell borders. */
 World randomWorld(unsigned seed)
 {
   std::mt19937 rng(seed);
@@ -33,7 +34,10 @@ World randomWorld(unsigned seed)
     else
     {
       const double a = 2 * M_PI * U(rng), len = 0.1 + 4 * U(rng);
-      w.add(Shape::segment(ShapeKind::Bank, c, c + len * Eigen::Vector2d(std::cos(a), std::sin(a))));
+      const Eigen::Vector2d b = c + len * Eigen::Vector2d(std::cos(a), std::sin(a));
+      const double kind = U(rng);  // two-sided, or a one-sided bank opaque or passable
+      w.add(kind < 0.4 ? Shape::segment(ShapeKind::Bank, c, b)
+                       : Shape::bank(c, b, kind < 0.7 ? 0.0 : 0.5));
     }
   }
   // Axis-aligned segments exactly on cell borders (cell size 2).

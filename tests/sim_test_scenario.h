@@ -1,6 +1,6 @@
 #pragma once
-// A small simulator scenario for fast tests: a 60 m x 50 m lake corner with a cluttered
-// bank, a 12 m path, a 181-ray sensor at 10 Hz.
+// A small simulator scenario for fast tests: a 60 m x 50 m lake corner with a cluttered,
+// low bank, a 12 m path, a 181-ray sensor at 10 Hz.
 
 #include <swslam/sim_scenario.h>
 
@@ -21,6 +21,7 @@ inline sim::Scenario smallScenario(unsigned seed = 3)
   sc.terrain.lake_center_y = -10;
   sc.terrain.lake_radius = 22;
   sc.terrain.lake_roughness = 3;
+  sc.terrain.bank_pass_through = 0.5;
   sc.terrain.island_radius = 0;
   sc.terrain.island_roughness = 0;
   sc.terrain.rocks = 3;

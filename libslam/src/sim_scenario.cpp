@@ -110,6 +110,7 @@ const NumberKeys<TerrainParams> kTerrainNumbers{
     {"lake_center_y", &TerrainParams::lake_center_y},
     {"lake_radius", &TerrainParams::lake_radius},
     {"lake_roughness", &TerrainParams::lake_roughness},
+    {"bank_pass_through", &TerrainParams::bank_pass_through},
     {"island_center_x", &TerrainParams::island_center_x},
     {"island_center_y", &TerrainParams::island_center_y},
     {"island_radius", &TerrainParams::island_radius},

@@ -28,6 +28,8 @@ void validateScenario(const Scenario& sc)
   require(t.lake_radius >= 0, "terrain", "lake_radius", "must be >= 0 (0: no water)");
   require(t.lake_roughness >= 0 && t.lake_roughness <= 0.3 * t.lake_radius + 1e-9, "terrain",
           "lake_roughness", "must be in [0, 0.3 * lake_radius]");
+  require(t.bank_pass_through >= 0 && t.bank_pass_through <= 1, "terrain", "bank_pass_through",
+          "must be a probability in [0, 1]");
   require(t.island_radius >= 0, "terrain", "island_radius", "must be >= 0 (0: no island)");
   require(t.island_roughness >= 0 && t.island_roughness <= 0.3 * t.island_radius + 1e-9,
           "terrain", "island_roughness", "must be in [0, 0.3 * island_radius]");

@@ -38,8 +38,8 @@ class Generator
       if (t.island_radius > 0)
         world_.islands.push_back(
             curve({t.island_center_x, t.island_center_y}, t.island_radius, t.island_roughness));
-      shore_length_ = addShore(world_.lake);
-      for (const auto& island : world_.islands) shore_length_ += addShore(island);
+      shore_length_ = addShore(world_.lake, true);
+      for (const auto& island : world_.islands) shore_length_ += addShore(island, false);
     }
     addRocks();
     for (int i = 0; i < 4; i++)
@@ -136,8 +136,9 @@ class Generator
     return c;
   }
 
-  /** Adds the shore as a closed chain of segments; returns its length. */
-  double addShore(const PolarCurve& c)
+  /** Adds the shore as a closed chain of bank segments, water on their left (water
+   * inside the curve: counter-clockwise); returns its length. */
+  double addShore(const PolarCurve& c, bool water_inside)
   {
     const size_t n = std::max<size_t>(
         12, static_cast<size_t>(std::ceil(2 * M_PI * c.radius / kShoreVertexSpacing)));
@@ -153,7 +154,8 @@ class Generator
     {
       const Vec &a = v[i], &b = v[(i + 1) % n];
       length += (b - a).norm();
-      world_.add(Shape::segment(ShapeKind::Bank, a, b));
+      const double pass = sc_.terrain.bank_pass_through;
+      world_.add(water_inside ? Shape::bank(a, b, pass) : Shape::bank(b, a, pass));
     }
     return length;
   }

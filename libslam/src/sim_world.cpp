@@ -23,6 +23,14 @@ Shape Shape::segment(ShapeKind kind, const Eigen::Vector2d& a, const Eigen::Vect
   return s;
 }
 
+Shape Shape::bank(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double pass)
+{
+  Shape s = segment(ShapeKind::Bank, a, b);
+  s.pass_through = pass;
+  s.one_sided = true;
+  return s;
+}
+
 Box boundingBox(const Shape& s)
 {
   if (s.isCircle())
@@ -60,8 +68,9 @@ double hitDistance(const Shape& s, const Ray& ray)
   }
   // o + t d = a + u (b - a), t > 0, u in [0, 1].
   const Eigen::Vector2d e = s.b - s.a;
+  // den = d x e > 0: the ray comes from the left of a -> b.
   const double den = d.x() * e.y() - d.y() * e.x();
-  if (std::abs(den) < 1e-15) return kNoHit;
+  if (std::abs(den) < 1e-15 || (s.one_sided && den < 0)) return kNoHit;
   const Eigen::Vector2d w = s.a - ray.origin;
   const double t = (w.x() * e.y() - w.y() * e.x()) / den;
   const double u = (w.x() * d.y() - w.y() * d.x()) / den;

@@ -28,6 +28,9 @@ struct TerrainParams : public mrpt::config::CLoadableOptions
 {
   double lake_center_x = 0, lake_center_y = 0, lake_radius = 90;
   double lake_roughness = 4;  ///< amplitude of the shore's irregularity [m]
+  /** Probability that a LiDAR ray reaching the shore from the water passes over the
+   * low bank and goes on over the land (0: an opaque bank). */
+  double bank_pass_through = 0;
   double island_center_x = 0, island_center_y = 0;
   double island_radius = 0;   ///< 0: no island
   double island_roughness = 4;

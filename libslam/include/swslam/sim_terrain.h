@@ -1,7 +1,8 @@
 #pragma once
 // Procedural generation of a natural world from a scenario and a seed: an irregular
-// lake shore (and island), rocks in the water, tree trunks and bushes on the banks,
-// reed clusters in the shallows, and a clear lane along the vehicle's path.
+// lake shore (and island) as a low bank facing the water, rocks in the water, tree
+// trunks and bushes on the banks, reed clusters in the shallows, and a clear lane along
+// the vehicle's path.
 
 #include <swslam/sim_scenario.h>
 #include <swslam/sim_vehicle.h>

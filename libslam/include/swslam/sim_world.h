@@ -1,9 +1,9 @@
 #pragma once
 // The simulated world: a rectangle of land and water holding the shapes a 2D LiDAR
 // ray can hit (shoreline segments, rocks, tree trunks, bush leaves, reed stems).
-// Bushes and reeds let rays through with a per-shape probability; whether a given
-// ray passes a given shape is a pure function of (ray key, shape index), so every
-// ray-casting method gives the same answer for the same ray.
+// Bushes, reeds and the low bank let rays through with a per-shape probability;
+// whether a given ray passes a given shape is a pure function of (ray key, shape
+// index), so every ray-casting method gives the same answer for the same ray.
 
 #include <Eigen/Core>
 
@@ -30,10 +30,16 @@ struct Shape
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
   double radius = 0;
   double pass_through = 0;  ///< probability that a ray goes through it unseen
+  /** A segment seen only by rays that cross it from its left side (left of a -> b);
+   * rays from the right go through it. */
+  bool one_sided = false;
 
   bool isCircle() const { return radius > 0; }
   static Shape circle(ShapeKind kind, const Eigen::Vector2d& c, double r, double pass = 0);
   static Shape segment(ShapeKind kind, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+  /** A shore segment with the water on its left: a bank rising from the water, seen
+   * only from the water, that a ray passes over with probability `pass`. */
+  static Shape bank(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double pass);
 };
 
 struct Box
@@ -77,7 +83,7 @@ struct Ray
 constexpr double kNoHit = std::numeric_limits<double>::infinity();
 
 /** Distance along `ray` to where it enters `s`, or kNoHit. A ray starting inside a
- * circle does not see it. */
+ * circle does not see it, nor does a ray crossing a one-sided segment from its right. */
 double hitDistance(const Shape& s, const Ray& ray);
 
 /** Whether `ray` goes through shape number `index` (probability `s.pass_through`). */

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# scripts/plot-stats.py: a synthetic stats.csv gives fig6.png and fig7.png that load as
+# images, with no temporary file left; bad inputs fail with a message naming the line
+# and write nothing. Exits 77 (CTest: skipped) when no python3 has matplotlib.
+# Usage: plot_stats_test.sh SOURCE_DIR BINARY_DIR
+set -euo pipefail
+src=$1
+script=$src/scripts/plot-stats.py
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The python3 on PATH first, then Debian's (python3-matplotlib installs for that one).
+py=
+for cand in python3 /usr/bin/python3; do
+  if command -v "$cand" > /dev/null && "$cand" -c 'import matplotlib' 2> /dev/null; then
+    py=$cand
+    break
+  fi
+done
+if [[ -z $py ]]; then
+  echo "SKIP plot_stats_test: no python3 with matplotlib (install python3-matplotlib)"
+  exit 77
+fi
+
+header=scan,timestamp,source,valid_rays,correspondences,sum_sq_residuals,match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops
+good=$work/stats.csv
+{
+  echo "$header"
+  # 400 scans at 40 Hz: matched mostly, a few odometry fallbacks, a node every 10th
+  # scan (graph and map work), a loop edge at scan 300.
+  awk 'BEGIN {
+    for (k = 0; k < 400; k++) {
+      src = k == 0 ? "first" : (k % 97 == 0 ? "odometry" : (k % 131 == 0 ? "constant_motion" : "match"));
+      node = k % 10 == 0;
+      printf "%d,%.6f,%s,%d,%d,%.6g,%.3f,%.3f,%.3f,%.3f,%d,%d,%d\n", k, 1700000000 + k / 40.0,
+        src, 400 + 300 * sin(k / 30.0), 350 + 250 * sin(k / 30.0), 0.2 + 0.1 * cos(k / 7.0),
+        0.3 + 0.05 * sin(k), 0.1, node ? 12 + sin(k) : 0, node ? 3.5 : 0, node, node, k == 300
+    }
+  }'
+} > "$good"
+
+out=$work/out
+for axis in time scan; do
+  rm -rf "$out"
+  "$py" "$script" "$good" "$out" --x "$axis" > "$work/log.txt"
+  for fig in fig6 fig7; do
+    [[ -s $out/$fig.png ]] || { echo "$fig.png missing (--x $axis)" >&2; exit 1; }
+    "$py" -c '
+import sys, matplotlib.image as mi
+a = mi.imread(sys.argv[1])
+assert a.ndim == 3 and a.shape[0] > 300 and a.shape[1] > 600, a.shape
+' "$out/$fig.png" || { echo "$fig.png does not load as an image" >&2; exit 1; }
+  done
+  [[ $(ls -A "$out") == $'fig6.png\nfig7.png' ]] || { echo "unexpected files:" >&2; ls -A "$out" >&2; exit 1; }
+done
+grep -q "wrote $out/fig7.png" "$work/log.txt"
+
+# Bad inputs: each fails, names the problem (and the line), writes no figure.
+bad() {  # name expected-message; the csv is on stdin
+  cat > "$work/$1.csv"
+  rm -rf "$out"
+  if "$py" "$script" "$work/$1.csv" "$out" 2> "$work/err.txt"; then
+    echo "bad input '$1' was accepted" >&2
+    exit 1
+  fi
+  grep -qF -- "$2" "$work/err.txt" ||
+    { echo "bad input '$1': message lacks '$2':" >&2; cat "$work/err.txt" >&2; exit 1; }
+  [[ ! -e $out/fig6.png && ! -e $out/fig7.png ]] || { echo "figure written for '$1'" >&2; exit 1; }
+  cat "$work/err.txt"
+}
+head -3 "$good" > "$work/head.csv"
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,abc,300,0.2,0.3,0.1,0,0,0,0,0"; } |
+  bad garbage "garbage.csv:4: column 'valid_rays': 'abc' is not a non-negative integer"
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,,0.3,0.1,0,0,0,0,0"; } |
+  bad missing "missing.csv:4: column 'sum_sq_residuals': missing value"
+{ cat "$work/head.csv"; echo "3,1700000000.075,guess,400,300,0.2,0.3,0.1,0,0,0,0,0"; } |
+  bad source "source.csv:4: column 'source': 'guess' is not one of first|match|odometry|constant_motion"
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,nan,0.1,0,0,0,0,0"; } |
+  bad nan "nan.csv:4: column 'match_ms': 'nan' is not a finite number"
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,0.3,0.1"; } |
+  bad short "short.csv:4: 8 values, expected 13"
+{ cat "$work/head.csv"; echo "1,1700000000.075,match,400,300,0.2,0.3,0.1,0,0,0,0,0"; } |
+  bad order "order.csv:4: scan 1 does not follow scan 1"
+sed '1s/loops/loop/' "$good" | bad header "header.csv:1: header is"
+echo "$header" | bad empty "empty.csv: no scan rows"
+: | bad nothing "nothing.csv: empty file"
+
+# An output path that is a file is an error.
+touch "$work/file"
+if "$py" "$script" "$good" "$work/file" 2> "$work/err.txt"; then
+  echo "a file as output folder was accepted" >&2
+  exit 1
+fi
+grep -q "is not a folder" "$work/err.txt"
+echo "plot_stats_test: OK"
