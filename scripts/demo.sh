@@ -11,8 +11,9 @@ log=datasets/lake-short/lake-short
 out=out/lake-short
 build/apps/swslam --config config/default.ini --input "$log.rawlog" --output "$out" \
   --ground-truth "$log.gt.tum"
-if python3 -c 'import matplotlib' 2> /dev/null; then
-  python3 scripts/plot-stats.py "$out/stats.csv" "$out"
+# Debian's python3 (with python3-matplotlib) draws the paper's Fig. 6 and Fig. 7.
+if /usr/bin/python3 -c 'import matplotlib' 2> /dev/null; then
+  /usr/bin/python3 scripts/plot-stats.py "$out/stats.csv" "$out"
 fi
 echo "Map picture: $out/map.png and $out/render.png (map, trajectory, graph)"
-echo "Table I summary: $out/summary.md; per-scan figures: $out/stats.csv"
+echo "Table I summary: $out/summary.md; per-scan figures: $out/stats.csv (plots: $out/fig6.png, $out/fig7.png)"

@@ -6,12 +6,14 @@ Usage: python3 scripts/plot-stats.py RUN_DIR/stats.csv OUT_DIR [--x time|scan]
   OUT_DIR/fig6.png  execution time of each thread per scan [ms]: matching, tracking, graph
                     optimization, map construction (the last two only at the scans that
                     gave their thread work)
-  OUT_DIR/fig7.png  sum of active squared residuals of the scan matches (above; scans with
-                    accepted loop edges marked) and the number of valid rays (below)
+  OUT_DIR/fig7.png  sum of active squared residuals of the latest graph optimization (eq. 11;
+                    above, with the scan matches' own sum and the scans with accepted loop
+                    edges marked) and the number of valid rays (below)
 
 stats.csv has a header line and one comma-separated row per input scan:
-  scan,timestamp,source,valid_rays,correspondences,sum_sq_residuals,match_ms,tracking_ms,
-  graph_ms,map_ms,keyframe,new_node,loops
+  scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,
+  match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization
+(doc/system.md describes each column).
 A missing or malformed value is an error naming its line and column. Each figure is written
 under a temporary name in OUT_DIR (created if missing) and renamed. Needs matplotlib
 (Debian: python3-matplotlib, installed by scripts/install-deps.sh).
@@ -24,8 +26,9 @@ import re
 import sys
 import tempfile
 
-COLUMNS = ["scan", "timestamp", "source", "valid_rays", "correspondences", "sum_sq_residuals",
-           "match_ms", "tracking_ms", "graph_ms", "map_ms", "keyframe", "new_node", "loops"]
+COLUMNS = ["scan", "timestamp", "source", "valid_rays", "correspondences", "match_sq_residuals",
+           "active_sq_residuals", "match_ms", "tracking_ms", "graph_ms", "map_ms", "keyframe",
+           "new_node", "loops", "full_optimization"]
 SOURCES = ("first", "match", "odometry", "constant_motion")
 INT_RE = re.compile(r"[0-9]+")
 FLOAT_RE = re.compile(r"[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?")
@@ -69,9 +72,10 @@ def source(text):
 
 
 PARSERS = {"scan": count, "timestamp": number, "source": source, "valid_rays": count,
-           "correspondences": count, "sum_sq_residuals": duration, "match_ms": duration,
+           "correspondences": count, "match_sq_residuals": duration,
+           "active_sq_residuals": duration, "match_ms": duration,
            "tracking_ms": duration, "graph_ms": duration, "map_ms": duration,
-           "keyframe": flag, "new_node": flag, "loops": count}
+           "keyframe": count, "new_node": flag, "loops": count, "full_optimization": flag}
 
 
 def read_stats(path):
@@ -142,8 +146,11 @@ def fig6(plt, cols, x, xlabel):
 def fig7(plt, cols, x, xlabel):
     matched = [s == "match" for s in cols["source"]]
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6))
-    top.plot(x, only_where(cols["sum_sq_residuals"], matched), lw=0.6)
+    top.plot(x, cols["active_sq_residuals"], lw=0.8, label="graph: sum of w r^2 (eq. 11)")
+    top.plot(x, only_where(cols["match_sq_residuals"], matched), lw=0.5, alpha=0.7,
+             label="scan match: sum of squared distances [m^2]")
     top.set_ylabel("sum of active squared residuals")
+    top.legend(fontsize=8, loc="upper left")
     loops = [xi for xi, n in zip(x, cols["loops"]) if n > 0]
     for xi in loops:
         top.axvline(xi, color="tab:red", lw=0.6, alpha=0.5)
