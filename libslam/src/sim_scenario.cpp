@@ -56,7 +56,8 @@ double readDegrees(const CConfigFileBase& c, const std::string& s, const std::st
   return mrpt::DEG2RAD(readDouble(c, s, key));
 }
 
-/** Every key the struct writes must be in the file: no silent defaults. */
+/** Every key the struct writes must be in the file (no silent defaults), except the few
+ * whose documented default is another key's value. */
 void checkAllKeysPresent(const CConfigFileBase& cfg, const std::string& section,
                          const mrpt::config::CLoadableOptions& params)
 {
@@ -65,7 +66,7 @@ void checkAllKeysPresent(const CConfigFileBase& cfg, const std::string& section,
   std::vector<std::string> keys;
   known.getAllKeys(section, keys);
   for (const auto& key : keys)
-    if (!cfg.keyExists(section, key))
+    if (!cfg.keyExists(section, key) && !(section == "world" && key == "noise_seed"))
       throw std::invalid_argument("missing key " + where(section, key));
 }
 
@@ -145,11 +146,13 @@ const NumberKeys<SensorParams> kSensorNumbers{
 void WorldParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
 {
   seed = readUnsigned(c, s, "seed");
+  noise_seed = c.keyExists(s, "noise_seed") ? readUnsigned(c, s, "noise_seed") : seed;
   loadNumbers(*this, kWorldNumbers, c, s);
 }
 void WorldParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
 {
   c.write(s, "seed", seed);
+  c.write(s, "noise_seed", noise_seed);
   saveNumbers(*this, kWorldNumbers, c, s);
 }
 

@@ -58,9 +58,9 @@ SimulationSummary runSimulation(const Scenario& sc, const std::string& output_di
   sum.duration = path.duration();
   sum.shapes = world.shapes.size();
 
-  LidarSimulator lidar(sc.sensor, grid, sc.world.seed);
+  LidarSimulator lidar(sc.sensor, grid, sc.world.noise_seed);
   OdometrySimulator odometry(sc.odometry.speed_noise_std, sc.odometry.yaw_drift,
-                             sc.odometry.yaw_noise_std, mix64(sc.world.seed ^ 0x0D0ull));
+                             sc.odometry.yaw_noise_std, mix64(sc.world.noise_seed ^ 0x0D0ull));
   sum.rays_per_scan = lidar.rays();
   const size_t scans = static_cast<size_t>(std::floor(path.duration() * sc.sensor.rate)) + 1;
   std::vector<StampedPose> truth;

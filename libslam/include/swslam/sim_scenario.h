@@ -15,6 +15,9 @@ namespace swslam::sim
 struct WorldParams : public mrpt::config::CLoadableOptions
 {
   unsigned seed = 1;
+  /** Seed of the sensor and odometry noise (ini key optional: defaults to `seed`), so that
+   * runs can repeat the same world and path with other noise. */
+  unsigned noise_seed = 1;
   double size_x = 200, size_y = 200;  ///< [m]
   double grid_cell = 2.0;             ///< spatial index cell size [m]
 
