@@ -1,0 +1,48 @@
+// swslam-regen-map: rebuilds a finished run's map from its graph and the input log, e.g. at
+// 0.1 m for the offline map (see doc/system.md).
+#include "cli.h"
+
+#include <swslam/graph_io.h>
+#include <swslam/map/map_outputs.h>
+#include <swslam/system/regen_map.h>
+#include <swslam/system/run_outputs.h>
+#include <swslam/system_config.h>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  TCLAP::CmdLine cmd("swslam-regen-map: a run's map again, at another resolution", ' ', "0.1");
+  TCLAP::ValueArg<std::string> run("r", "run", "Output directory of a swslam run (graph.graph, keyframes.tum)",
+                                   true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> input("i", "input", "The run's input log", true, "", "LOG", cmd);
+  TCLAP::ValueArg<std::string> output("o", "output", "Where to write the map files", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Configuration ([map], [carmen])", true, "", "INI", cmd);
+  TCLAP::ValueArg<double> resolution("", "resolution", "Cell size [m] (default: the config's)", false, 0, "M", cmd);
+  TCLAP::SwitchArg no_render("", "no-render", "Skip render.png", cmd);
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+  try
+  {
+    swslam::SystemParams params = swslam::loadSystemParams(config.getValue());
+    if (resolution.isSet()) params.map.resolution = resolution.getValue();
+    swslam::RunResults run_data;
+    run_data.graph = swslam::loadGraph(run.getValue() + "/graph.graph");
+    run_data.keyframes = swslam::readTum(run.getValue() + "/keyframes.tum");
+    run_data.trajectory = run_data.keyframes;
+    swslam::RegenReport report;
+    const auto grid = swslam::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
+                                            params.map, params.carmen, &report);
+    const swslam::RenderInput render = swslam::renderInputOf(run_data);
+    const auto problems = swslam::writeMapOutputs(output.getValue(), grid, params.map,
+                                                  no_render.getValue() ? nullptr : &render);
+    for (const auto& p : problems) std::cerr << "swslam-regen-map: " << p.file << ": " << p.message << "\n";
+    std::cout << report.inserted << " of " << report.nodes << " node scans inserted at "
+              << params.map.resolution << " m; map files in " << output.getValue() << "/\n";
+    return problems.empty() ? 0 : 4;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "swslam-regen-map: " << e.what() << "\n";
+    return 1;
+  }
+}
