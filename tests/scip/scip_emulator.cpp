@@ -238,6 +238,7 @@ void ScipEmulator::run()
       const auto wait = std::chrono::ceil<std::chrono::milliseconds>(due - Clock::now());
       timeout_ms = static_cast<int>(std::max<int64_t>(0, wait.count()));
     }
+    const int polled = c.fd;
     pollfd fds[3] = {{wake_fd_, POLLIN, 0}, {listen_fd_, POLLIN, 0}, {c.fd, 0, 0}};
     if (c.fd >= 0) fds[2].events = static_cast<short>(POLLIN | (c.out.empty() ? 0 : POLLOUT));
     if (::poll(fds, c.fd >= 0 ? 3 : 2, timeout_ms) < 0 && errno != EINTR) break;
@@ -260,7 +261,7 @@ void ScipEmulator::run()
         c.number = ++stats_.connections;
       }
     }
-    if (c.fd >= 0 && (fds[2].revents & (POLLIN | POLLHUP | POLLERR)))
+    if (c.fd >= 0 && c.fd == polled && (fds[2].revents & (POLLIN | POLLHUP | POLLERR)))
     {
       char buf[4096];
       const ssize_t n = ::recv(c.fd, buf, sizeof buf, 0);
