@@ -1,0 +1,103 @@
+// swslam-scip-emulator: serves a simulator scenario as a Hokuyo UTM-30LX (SCIP 2.0 over
+// TCP) for manual and script tests. Not installed. See doc/live.md, "SCIP emulator".
+#include "cli.h"
+#include "scip_emulator.h"
+#include "scip_sim_source.h"
+
+#include <csignal>
+#include <ctime>
+#include <iostream>
+
+namespace
+{
+/** "A:B" split at the first ':'; throws naming the option. */
+std::pair<std::string, std::string> splitPair(const std::string& s, const std::string& option)
+{
+  const size_t colon = s.find(':');
+  if (colon == std::string::npos)
+    throw std::invalid_argument("--" + option + " '" + s + "': expected KEY:FAULT");
+  return {s.substr(0, colon), s.substr(colon + 1)};
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  using namespace swslam::scip;
+  TCLAP::CmdLine cmd("swslam-scip-emulator: a simulated UTM-30LX on a TCP port", ' ', "0.1");
+  TCLAP::ValueArg<std::string> scenario("s", "scenario", "Scenario .ini file", true, "",
+                                        "FILE.ini", cmd);
+  TCLAP::ValueArg<std::string> address("a", "address", "IPv4 address to listen on", false,
+                                       "127.0.0.1", "IP", cmd);
+  TCLAP::ValueArg<unsigned> port("p", "port", "TCP port (0: any free one, printed)", false,
+                                 10940, "PORT", cmd);
+  TCLAP::ValueArg<double> duration("d", "duration", "Seconds to serve (0: until SIGINT/SIGTERM)",
+                                   false, 0, "SEC", cmd);
+  TCLAP::ValueArg<unsigned> drop_after("", "drop-after",
+                                       "Close a connection after this many scans", false, 0,
+                                       "N", cmd);
+  TCLAP::ValueArg<unsigned> drops("", "drops", "Connections dropped by --drop-after", false, 1,
+                                  "N", cmd);
+  TCLAP::MultiArg<std::string> scan_faults(
+      "", "scan-fault", "Malformed scan: NUMBER:bad-checksum|truncated-line|wrong-echo", false,
+      "N:FAULT", cmd);
+  TCLAP::MultiArg<std::string> reply_faults(
+      "", "reply-fault", "Malformed replies to a command: CODE:FAULT, e.g. PP:bad-checksum",
+      false, "CODE:FAULT", cmd);
+  try
+  {
+    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+    if (port.getValue() > 65535) throw std::invalid_argument("--port: above 65535");
+    if (duration.getValue() < 0) throw std::invalid_argument("--duration: negative");
+    EmulatorOptions opt;
+    opt.address = address.getValue();
+    opt.port = static_cast<uint16_t>(port.getValue());
+    opt.faults.drop_after_scans = drop_after.getValue();
+    opt.faults.drops = drops.getValue();
+    for (const auto& f : scan_faults.getValue())
+    {
+      const auto [number, fault] = splitPair(f, "scan-fault");
+      opt.faults.scans[std::stoull(number)] = parseFault(fault);
+    }
+    for (const auto& f : reply_faults.getValue())
+    {
+      const auto [code, fault] = splitPair(f, "reply-fault");
+      opt.faults.replies[code] = parseFault(fault);
+    }
+    const SimScanSource source(swslam::sim::loadScenario(scenario.getValue()), opt.sensor);
+
+    // The emulator's thread inherits the blocked signals: only this thread waits for them.
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    ScipEmulator emulator(source, opt);
+    std::cout << "swslam-scip-emulator: " << opt.sensor.model << " on " << opt.address << ":"
+              << emulator.port() << ", " << source.pathScans() << " scans along the path at "
+              << source.rate() << " Hz" << std::endl;
+    if (duration.getValue() > 0)
+    {
+      timespec ts{};
+      ts.tv_sec = static_cast<time_t>(duration.getValue());
+      ts.tv_nsec = static_cast<long>((duration.getValue() - ts.tv_sec) * 1e9);
+      sigtimedwait(&signals, nullptr, &ts);
+    }
+    else
+      sigwaitinfo(&signals, nullptr);
+    emulator.stop();
+    const auto s = emulator.stats();
+    std::cout << "swslam-scip-emulator: " << s.connections << " connections, " << s.scans_sent
+              << " scans sent, " << s.commands.size() << " commands"
+              << (s.error.empty() ? "" : ", error: " + s.error) << std::endl;
+    return s.error.empty() ? 0 : 1;
+  }
+  catch (const TCLAP::ArgException& e)
+  {
+    std::cerr << "swslam-scip-emulator: " << e.error() << " (" << e.argId() << ")\n";
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "swslam-scip-emulator: " << e.what() << "\n";
+  }
+  return 1;
+}
