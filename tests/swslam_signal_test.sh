@@ -13,7 +13,10 @@ for sig in INT TERM; do
   "$bin/swslam" -c "$src/config/default.ini" -i "$src/datasets/lake-short/lake-short.rawlog" \
     -o "$out" -q --realtime-factor 10 > "$tmp/$sig.log" 2>&1 &
   pid=$!
-  sleep 1.5
+  # The signal handlers are in place once the output folder exists (a loaded machine can
+  # take seconds to start the process); then let it map for a moment.
+  for _ in $(seq 300); do [[ -d $out ]] && break; sleep 0.1; done
+  sleep 1
   kill -s "$sig" "$pid"
   wait "$pid"
   code=$?

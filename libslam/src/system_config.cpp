@@ -45,7 +45,15 @@ std::vector<std::string> SystemParams::sections()
 
 SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg)
 {
-  checkKnownSections(cfg, SystemParams::sections());
+  return loadSystemParams(cfg, {});
+}
+
+SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg,
+                              const std::vector<std::string>& other_sections)
+{
+  std::vector<std::string> allowed = SystemParams::sections();
+  allowed.insert(allowed.end(), other_sections.begin(), other_sections.end());
+  checkKnownSections(cfg, allowed);
   SystemParams p;
   for (auto& [name, module] : p.modules())
   {

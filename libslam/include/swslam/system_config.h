@@ -40,6 +40,10 @@ struct SystemParams
 /** Loads every section present; absent sections keep their defaults. Throws
  * std::invalid_argument naming the section or key that is wrong. */
 SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg);
+/** Same, in a file that also holds other programs' sections (e.g. a sensor's [LASER_2D]):
+ * those are allowed, the swslam ones are still checked key by key. */
+SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg,
+                              const std::vector<std::string>& other_sections);
 SystemParams loadSystemParams(const std::string& ini_path);
 
 /** Writes every section with its current values (what default.ini documents). */
