@@ -85,19 +85,19 @@ TEST(LiveRun, MapsFromTheEmulatorRecordsEveryScanAndReplaysIdentically)
   const std::string dir = test::tempDir("live_main");
   const auto source = lakeSource();
   scip::ScipEmulator emu(source, options());
-  LiveRunOptions o = liveOptions(dir, emu.port(), 12);
+  LiveRunOptions o = liveOptions(dir, emu.port(), 20);
   o.deterministic = true;  // so that the replay must give the same trajectory, bit for bit
   std::ostringstream out, err;
   std::thread stopper([&] {
     // The sensor goes quiet before the app stops: everything it sent must be recorded.
-    std::this_thread::sleep_for(milliseconds(10000));
+    std::this_thread::sleep_for(milliseconds(18000));
     emu.stop();
   });
   const int code = runLive(o, out, err);
   stopper.join();
   ASSERT_EQ(code, 0) << err.str();
   const auto sent = emu.sentScans();
-  ASSERT_GT(sent.size(), 300u) << err.str();
+  ASSERT_GT(sent.size(), 600u) << err.str();
   const std::string recording = o.output + "/recording.rawlog";
   EXPECT_EQ(countScans(recording), sent.size()) << out.str();
   EXPECT_EQ(readTum(o.output + "/trajectory.tum").size(), sent.size());
