@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace swslam
 {
@@ -9,19 +11,39 @@ NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<in
     : H_(3 * free_blocks, 3 * free_blocks),
       g_(Eigen::VectorXd::Zero(3 * free_blocks))
 {
-  std::vector<Eigen::Triplet<double>> pattern;
-  pattern.reserve(6 * free_blocks + 9 * pairs.size());
-  for (int a = 0; a < free_blocks; ++a)
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c <= r; ++c) pattern.emplace_back(3 * a + r, 3 * a + c, 0.0);
+  // The lower triangle's pattern, written straight into compressed storage: per block
+  // column a, the lower half of the diagonal block, then full blocks at the rows of its
+  // coupled blocks b > a, in increasing order.
+  std::vector<std::vector<int>> below(static_cast<size_t>(free_blocks));
   for (const auto& [a, b] : pairs)
   {
-    const int hi = std::max(a, b), lo = std::min(a, b);
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) pattern.emplace_back(3 * hi + r, 3 * lo + c, 0.0);
+    if (a < 0 || b < 0 || a >= free_blocks || b >= free_blocks)
+      throw std::invalid_argument("NormalEquations: block pair (" + std::to_string(a) + ", " +
+                                  std::to_string(b) + ") outside 0.." +
+                                  std::to_string(free_blocks - 1));
+    if (a != b) below[static_cast<size_t>(std::min(a, b))].push_back(std::max(a, b));
   }
-  H_.setFromTriplets(pattern.begin(), pattern.end());
-  H_.makeCompressed();
+  Eigen::Index nnz = 0;
+  for (auto& rows : below)
+  {
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    nnz += 6 + 9 * static_cast<Eigen::Index>(rows.size());
+  }
+  H_.resizeNonZeros(nnz);
+  int* outer = H_.outerIndexPtr();
+  int* inner = H_.innerIndexPtr();
+  int s = 0;
+  for (int a = 0; a < free_blocks; ++a)
+    for (int c = 0; c < 3; ++c)
+    {
+      outer[3 * a + c] = s;
+      for (int r = c; r < 3; ++r) inner[s++] = 3 * a + r;
+      for (const int b : below[static_cast<size_t>(a)])
+        for (int r = 0; r < 3; ++r) inner[s++] = 3 * b + r;
+    }
+  outer[3 * free_blocks] = s;
+  std::fill(H_.valuePtr(), H_.valuePtr() + nnz, 0.0);
   diagonal_slots_.resize(g_.size());
   for (int i = 0; i < g_.size(); ++i) diagonal_slots_[i] = slot(i, i);
   damped_ = H_;

@@ -2,9 +2,11 @@
 // Sparse normal equations H dx = -g of a pose graph, stored in 3x3 blocks: the pattern is
 // built once per problem, then each linearization only adds into fixed value slots, and
 // each damped solve reuses the symbolic factorization. Eigen's simplicial LDL^T (AMD
-// ordering) is used while its factor stays sparse, as along a trajectory with few loops;
-// when the factor is dense (an area revisited over and over), CHOLMOD's supernodal
+// ordering of the 3x3 blocks, block_amd_ordering.h) is used while its factor stays sparse,
+// as along a trajectory with few loops; when the factor is dense (an area revisited over and over), CHOLMOD's supernodal
 // Cholesky takes over, measurably faster there (doc/graph-optimization.md).
+
+#include <swslam/block_amd_ordering.h>
 
 #include <Eigen/Core>
 #include <Eigen/CholmodSupport>
@@ -20,8 +22,9 @@ class NormalEquations
 {
  public:
   /** `free_blocks` variables of 3 dofs each; `pairs` lists the (a, b) block pairs, a != b,
-   * that edges couple (duplicates allowed). Edges touching one free variable only need
-   * the diagonal block, always present. */
+   * that edges couple (duplicates and either order allowed; a == b adds nothing). Edges
+   * touching one free variable only need the diagonal block, always present. Throws
+   * std::invalid_argument for a block index outside [0, free_blocks). */
   NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs);
 
   void setZero();
@@ -53,8 +56,10 @@ class NormalEquations
   Eigen::SparseMatrix<double> damped_;
   std::vector<int> diagonal_slots_;  // per scalar row, slot of H(i, i)
   Eigen::VectorXd g_;
-  /** Simplicial LDL^T that tells the size of its factor right after the symbolic analysis. */
-  struct SimplicialSolver : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
+  /** Simplicial LDL^T, ordered by AMD on the 3x3 blocks, that tells the size of its factor
+   * right after the symbolic analysis. */
+  struct SimplicialSolver
+      : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, BlockAmdOrdering<3>>
   {
     double factorNonZeros() const { return m_nonZerosPerCol.cast<double>().sum(); }
   };
