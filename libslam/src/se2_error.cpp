@@ -8,26 +8,26 @@ namespace swslam
 {
 double wrapAngle(double a) { return mrpt::math::wrapToPi(a); }
 
+SinCos sinCos(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
 namespace
 {
-/** The parts of e_ij that its Jacobians share: R_i^T (t_j - t_i) and the rotations. */
+/** The parts of e_ij that its Jacobians share: d = R_i^T (t_j - t_i), node j in the frame
+ * of node i, and e itself. */
 struct Se2Terms
 {
-  double ci, si, cz, sz;  ///< cos/sin of theta_i and theta_z
-  double d0, d1;          ///< d = R_i^T (t_j - t_i): node j in the frame of node i
+  double d0, d1;
   Eigen::Vector3d e;
 };
 
-Se2Terms se2Terms(const Pose2& xi, const Pose2& xj, const Pose2& z)
+Se2Terms se2Terms(const Pose2& xi, const Pose2& xj, const Pose2& z, SinCos ri, SinCos rz)
 {
   Se2Terms t;
-  t.ci = std::cos(xi.z()), t.si = std::sin(xi.z());
-  t.cz = std::cos(z.z()), t.sz = std::sin(z.z());
   const double dx = xj.x() - xi.x(), dy = xj.y() - xi.y();
-  t.d0 = t.ci * dx + t.si * dy;
-  t.d1 = -t.si * dx + t.ci * dy;
+  t.d0 = ri.c * dx + ri.s * dy;
+  t.d1 = -ri.s * dx + ri.c * dy;
   const double u0 = t.d0 - z.x(), u1 = t.d1 - z.y();
-  t.e = Eigen::Vector3d(t.cz * u0 + t.sz * u1, -t.sz * u0 + t.cz * u1,
+  t.e = Eigen::Vector3d(rz.c * u0 + rz.s * u1, -rz.s * u0 + rz.c * u1,
                         wrapAngle(xj.z() - xi.z() - z.z()));
   return t;
 }
@@ -35,18 +35,30 @@ Se2Terms se2Terms(const Pose2& xi, const Pose2& xj, const Pose2& z)
 
 Eigen::Vector3d se2Error(const Pose2& xi, const Pose2& xj, const Pose2& z)
 {
-  return se2Terms(xi, xj, z).e;
+  return se2Error(xi, xj, z, sinCos(xi.z()), sinCos(z.z()));
+}
+
+Eigen::Vector3d se2Error(const Pose2& xi, const Pose2& xj, const Pose2& z, SinCos ri, SinCos rz)
+{
+  return se2Terms(xi, xj, z, ri, rz).e;
 }
 
 Eigen::Vector3d se2ErrorWithJacobians(const Pose2& xi, const Pose2& xj, const Pose2& z,
                                       Eigen::Matrix3d& Ji, Eigen::Matrix3d& Jj)
 {
-  const Se2Terms t = se2Terms(xi, xj, z);
+  return se2ErrorWithJacobians(xi, xj, z, sinCos(xi.z()), sinCos(z.z()), Ji, Jj);
+}
+
+Eigen::Vector3d se2ErrorWithJacobians(const Pose2& xi, const Pose2& xj, const Pose2& z,
+                                      SinCos ri, SinCos rz, Eigen::Matrix3d& Ji,
+                                      Eigen::Matrix3d& Jj)
+{
+  const Se2Terms t = se2Terms(xi, xj, z, ri, rz);
   // A = R_z^T R_i^T = R(theta_i + theta_z)^T, by the angle-sum identities.
-  const double ca = t.ci * t.cz - t.si * t.sz, sa = t.si * t.cz + t.ci * t.sz;
+  const double ca = ri.c * rz.c - ri.s * rz.s, sa = ri.s * rz.c + ri.c * rz.s;
   // d d / d theta_i = (d1, -d0); rotated by R_z^T.
-  const double g0 = t.cz * t.d1 - t.sz * t.d0;
-  const double g1 = -t.sz * t.d1 - t.cz * t.d0;
+  const double g0 = rz.c * t.d1 - rz.s * t.d0;
+  const double g1 = -rz.s * t.d1 - rz.c * t.d0;
   Ji << -ca, -sa, g0,  //
       sa, -ca, g1,     //
       0, 0, -1;
