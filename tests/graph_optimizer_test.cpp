@@ -117,6 +117,7 @@ TEST(GraphOptimizerParams, DefaultIniLoadsStrictlyAndRoundTrips)
   EXPECT_EQ(p.kernel_alpha, d.kernel_alpha);
   EXPECT_EQ(p.kernel_c, d.kernel_c);
   EXPECT_EQ(p.window_size, d.window_size);
+  EXPECT_EQ(p.full_optimization_interval, d.full_optimization_interval);
   EXPECT_EQ(p.max_iterations, d.max_iterations);
   EXPECT_EQ(p.lm_initial_lambda, d.lm_initial_lambda);
   EXPECT_EQ(p.lm_max_lambda, d.lm_max_lambda);
@@ -133,10 +134,12 @@ TEST(GraphOptimizerParams, DefaultIniLoadsStrictlyAndRoundTrips)
   swslam::GraphOptimizerParams q;
   q.kernel_alpha = swslam::kAlphaWelsch;
   q.window_size = 12;
+  q.full_optimization_interval = 7;
   q.saveToConfigFile(mem, "graph_optimizer");
   const auto r = swslam::loadStrict<swslam::GraphOptimizerParams>(mem, "graph_optimizer");
   EXPECT_TRUE(std::isinf(r.kernel_alpha) && r.kernel_alpha < 0);
   EXPECT_EQ(r.window_size, 12u);
+  EXPECT_EQ(r.full_optimization_interval, 7u);
 }
 
 TEST(GraphOptimizerParams, RejectsUnknownKeysAndBadValues)
@@ -152,4 +155,8 @@ TEST(GraphOptimizerParams, RejectsUnknownKeysAndBadValues)
   swslam::GraphOptimizerParams p;
   p.window_size = 0;
   EXPECT_THROW(p.check(), std::invalid_argument);
+  mrpt::config::CConfigFileMemory zero;
+  zero.write("graph_optimizer", "full_optimization_interval", 0);
+  EXPECT_THROW(swslam::loadStrict<swslam::GraphOptimizerParams>(zero, "graph_optimizer"),
+               std::invalid_argument);
 }

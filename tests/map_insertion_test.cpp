@@ -147,3 +147,34 @@ TEST(MapInsertion, GridGrowsToHoldFarScans)
   EXPECT_GT(occupancy(g, -34.95, 30.05), 0.5);
   EXPECT_LT(occupancy(g, -37.05, 30.05), 0.5);
 }
+
+TEST(MapInsertion, AReusedScratchGridGivesTheSameContributions)
+{
+  // A long-range scan, then short ones at other poses, then the long one again: the scratch
+  // grid kept from call to call (larger or smaller than needed, full of the previous scan)
+  // changes no delta.
+  const auto p = test::smallMapParams(10);
+  std::vector<double> long_ranges(181, 25.0), short_ranges(181, 1.5);
+  for (size_t i = 0; i < long_ranges.size(); i += 7) long_ranges[i] = -1;  // no return
+  const auto far = sanitizedScan(test::makeScan(long_ranges, M_PI, 30), p);
+  const auto near = sanitizedScan(test::makeScan(short_ranges, 1.5 * M_PI, 30), p);
+  const std::vector<std::pair<const mrpt::obs::CObservation2DRangeScan*, CPose2D>> calls = {
+      {&far, CPose2D(0.05, 0.05, 0.3)},   {&near, CPose2D(-3.1, 7.2, -2.0)},
+      {&near, CPose2D(40.0, -12.0, 1.0)}, {&far, CPose2D(0.05, 0.05, 0.3)},
+      {&far, CPose2D(-55.3, 20.1, 3.0)}};
+  ContributionScratch scratch;
+  for (const auto& [scan, pose] : calls)
+  {
+    const ScanContribution reused = computeContribution(*scan, pose, p, scratch);
+    const ScanContribution fresh = computeContribution(*scan, pose, p);
+    ASSERT_FALSE(fresh.runs.empty());
+    ASSERT_EQ(reused.runs.size(), fresh.runs.size());
+    for (size_t k = 0; k < fresh.runs.size(); k++)
+    {
+      EXPECT_EQ(reused.runs[k].y, fresh.runs[k].y);
+      EXPECT_EQ(reused.runs[k].x0, fresh.runs[k].x0);
+      EXPECT_EQ(reused.runs[k].length, fresh.runs[k].length);
+    }
+    EXPECT_EQ(reused.deltas, fresh.deltas);
+  }
+}

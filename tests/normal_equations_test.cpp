@@ -9,11 +9,14 @@
 
 namespace
 {
-void checkAgainstDense(int blocks, const std::vector<std::pair<int, int>>& pairs, bool cholmod)
+/** Fills the system with random blocks at `pairs` (the pattern given by `pattern_pairs`,
+ * by default the same) and solves it. */
+void checkAgainstDense(int blocks, const std::vector<std::pair<int, int>>& pairs, bool cholmod,
+                       const std::vector<std::pair<int, int>>* pattern_pairs = nullptr)
 {
   std::mt19937 rng(9);
   std::normal_distribution<double> n01;
-  swslam::NormalEquations ne(blocks, pairs);
+  swslam::NormalEquations ne(blocks, pattern_pairs ? *pattern_pairs : pairs);
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(3 * blocks, 3 * blocks);
   auto randomBlock = [&] {
     Eigen::Matrix3d b;
@@ -72,4 +75,26 @@ TEST(NormalEquations, SetZeroClearsEverything)
   ne.setZero();
   Eigen::VectorXd dx;
   EXPECT_FALSE(ne.solveDamped(1.0, dx) && dx.norm() > 0);  // singular or a zero step
+}
+
+TEST(NormalEquations, PairsInEitherOrderDuplicatedOrOnTheDiagonalGiveOnePattern)
+{
+  // The chain above with each pair once, and again with duplicates, reversed pairs and
+  // a == b pairs: the same system, solved the same way.
+  std::vector<std::pair<int, int>> once, messy;
+  for (int a = 1; a < 50; ++a)
+  {
+    once.emplace_back(a - 1, a);
+    messy.emplace_back(a, a - 1);
+    messy.emplace_back(a - 1, a);
+    messy.emplace_back(a, a);
+  }
+  checkAgainstDense(50, once, false);
+  checkAgainstDense(50, once, false, &messy);
+}
+
+TEST(NormalEquations, PairOutsideTheBlocksIsAnError)
+{
+  EXPECT_THROW(swslam::NormalEquations(3, {{0, 3}}), std::invalid_argument);
+  EXPECT_THROW(swslam::NormalEquations(3, {{-1, 1}}), std::invalid_argument);
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -167,4 +168,27 @@ TEST(SlamSystem, ClosesALoopAroundACircuit)
   for (size_t i = 0; i < res.graph.edgeCount(); i++) loop_edges += res.graph.edge(i).kind == EdgeKind::Loop;
   EXPECT_EQ(loop_edges, res.loops);
   EXPECT_LT(eval::evaluateTrajectory(res.trajectory, truth, 0.001).ate.position.rmse, 0.1);
+
+  // Loops come node after node here: full optimizations at least full_optimization_interval
+  // nodes apart (but for the final one, on the last row), and one within that many nodes of
+  // every loop.
+  const size_t interval = p.graph_optimizer.full_optimization_interval;
+  ASSERT_GT(interval, 1u);
+  std::vector<size_t> loop_nodes, full_nodes;
+  size_t node = 0, nodes = 0;
+  for (const ScanStats& row : res.stats)
+  {
+    if (row.new_node) node = nodes++;  // node ids count up from 0
+    if (row.loops > 0) loop_nodes.push_back(node);
+    if (row.full_optimization) full_nodes.push_back(node);
+  }
+  ASSERT_GT(loop_nodes.size(), 1u);
+  ASSERT_FALSE(full_nodes.empty());
+  EXPECT_LT(full_nodes.size(), loop_nodes.size());
+  for (size_t k = 1; k + 1 < full_nodes.size(); ++k)
+    EXPECT_GE(full_nodes[k] - full_nodes[k - 1], interval);
+  for (const size_t l : loop_nodes)
+    EXPECT_TRUE(std::any_of(full_nodes.begin(), full_nodes.end(),
+                            [&](size_t f) { return f >= l && f <= l + interval; }))
+        << "loop at node " << l;
 }

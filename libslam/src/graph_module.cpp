@@ -12,7 +12,10 @@ using mrpt::poses::CPose2D;
 
 GraphModule::GraphModule(const GraphOptimizerParams& graph, const LoopClosureParams& loops,
                          const PlicpParams& plicp)
-    : graph_params_(graph), loop_params_(loops), plicp_params_(plicp)
+    : graph_params_(graph),
+      loop_params_(loops),
+      plicp_params_(plicp),
+      schedule_(graph.full_optimization_interval)
 {
 }
 
@@ -61,7 +64,7 @@ GraphStep GraphModule::addNode(const NewNode& node)
   nodes_.push_back(ln);
 
   step.loops_accepted = closeLoops(id, step);
-  optimize(step.loops_accepted > 0, step);
+  optimize(schedule_.fullNow(id, step.loops_accepted), step);
   step.insert = MapInsert{node.scan, id, node.observation,
                           step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
   return step;
@@ -108,7 +111,9 @@ GraphStep GraphModule::optimizeAll(size_t scan)
 {
   GraphStep step;
   step.scan = scan;
-  if (!nodes_.empty()) optimize(true, step);
+  if (nodes_.empty()) return step;
+  schedule_.ranFull(nodes_.size() - 1);
+  optimize(true, step);
   return step;
 }
 

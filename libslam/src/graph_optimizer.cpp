@@ -30,12 +30,33 @@ struct Evaluation
   double cost = 0, chi2 = 0, active = 0;
 };
 
-Evaluation evaluate(const GraphProblem& p, const std::vector<Pose2>& x, const BarronKernel& k)
+/** sin/cos of each measurement's angle (once per problem). */
+std::vector<SinCos> measurementRotations(const GraphProblem& p)
+{
+  std::vector<SinCos> r;
+  r.reserve(p.edges.size());
+  for (const auto& e : p.edges) r.push_back(sinCos(e.z.z()));
+  return r;
+}
+
+/** sin/cos of each pose's angle, shared by the pose's edges. */
+std::vector<SinCos> poseRotations(const std::vector<Pose2>& x)
+{
+  std::vector<SinCos> r;
+  r.reserve(x.size());
+  for (const auto& pose : x) r.push_back(sinCos(pose.z()));
+  return r;
+}
+
+Evaluation evaluate(const GraphProblem& p, const std::vector<Pose2>& x, const BarronKernel& k,
+                    const std::vector<SinCos>& rz)
 {
   Evaluation ev;
-  for (const auto& e : p.edges)
+  const std::vector<SinCos> rx = poseRotations(x);
+  for (size_t n = 0; n < p.edges.size(); ++n)
   {
-    const Eigen::Vector3d err = se2Error(x[e.i], x[e.j], e.z);
+    const auto& e = p.edges[n];
+    const Eigen::Vector3d err = se2Error(x[e.i], x[e.j], e.z, rx[e.i], rz[n]);
     const double r2 = err.dot(e.information * err);
     const EdgeCost c = edgeCost(std::sqrt(r2), e.robust, k);
     ev.cost += c.cost;
@@ -47,16 +68,19 @@ Evaluation evaluate(const GraphProblem& p, const std::vector<Pose2>& x, const Ba
 
 /** Fills H and g with the IRLS-weighted Gauss-Newton terms at x (eq. 11-13). */
 void linearize(const GraphProblem& p, const std::vector<Pose2>& x, const std::vector<int>& var,
-               const BarronKernel& k, NormalEquations& ne)
+               const BarronKernel& k, const std::vector<SinCos>& rz, NormalEquations& ne)
 {
   ne.setZero();
   Eigen::VectorXd& g = ne.gradient();
   Eigen::Matrix3d Ji, Jj;
-  for (const auto& e : p.edges)
+  const std::vector<SinCos> rx = poseRotations(x);
+  for (size_t n = 0; n < p.edges.size(); ++n)
   {
+    const auto& e = p.edges[n];
     const int a = var[e.i], b = var[e.j];
     if (a < 0 && b < 0) continue;
-    const Eigen::Vector3d err = se2ErrorWithJacobians(x[e.i], x[e.j], e.z, Ji, Jj);
+    const Eigen::Vector3d err =
+        se2ErrorWithJacobians(x[e.i], x[e.j], e.z, rx[e.i], rz[n], Ji, Jj);
     const double r = std::sqrt(err.dot(e.information * err));
     const Eigen::Matrix3d W = edgeCost(r, e.robust, k).weight * e.information;
     const Eigen::Vector3d We = W * err;
@@ -104,8 +128,8 @@ struct Outcome
 /** Levenberg-Marquardt with IRLS reweighting at every linearization (eq. 11-13). Updates x
  * and ev (its evaluation) on every accepted step, and the iteration counts of rep. */
 Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
-                           const GraphOptimizerParams& params, std::vector<Pose2>& x,
-                           Evaluation& ev, OptimizationReport& rep)
+                           const GraphOptimizerParams& params, const std::vector<SinCos>& rz,
+                           std::vector<Pose2>& x, Evaluation& ev, OptimizationReport& rep)
 {
   const BarronKernel kernel = params.kernel();
   std::vector<std::pair<int, int>> pairs;
@@ -118,7 +142,7 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
   bool relinearize = true;
   while (rep.iterations < params.max_iterations)
   {
-    if (relinearize) linearize(p, x, var, kernel, ne);
+    if (relinearize) linearize(p, x, var, kernel, rz, ne);
     relinearize = false;
     if (ne.gradient().lpNorm<Eigen::Infinity>() < params.gradient_tolerance)
       return {OptimizationStatus::Converged, "gradient below tolerance"};
@@ -126,7 +150,7 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
     const bool solved = ne.solveDamped(lambda, dx);
     std::vector<Pose2> x_new = x;
     if (solved) applyStep(var, dx, x_new);
-    const Evaluation ev_new = solved ? evaluate(p, x_new, kernel) : Evaluation{};
+    const Evaluation ev_new = solved ? evaluate(p, x_new, kernel, rz) : Evaluation{};
     const double decrease = ev.cost - ev_new.cost;
     const double predicted = solved ? ne.predictedDecrease(lambda, dx) : 0.0;
     if (solved && std::isfinite(ev_new.cost) && decrease > 0 && predicted > 0)
@@ -176,7 +200,8 @@ const char* statusName(OptimizationStatus s)
 
 double graphChi2(const GraphProblem& problem)
 {
-  return evaluate(problem, problem.poses, BarronKernel{2.0, 1.0}).chi2;
+  return evaluate(problem, problem.poses, BarronKernel{2.0, 1.0}, measurementRotations(problem))
+      .chi2;
 }
 
 void checkProblem(const GraphProblem& p)
@@ -206,7 +231,8 @@ OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimi
   rep.fixed_nodes = problem.poses.size() - rep.free_nodes;
 
   std::vector<Pose2> x = problem.poses;
-  Evaluation ev = evaluate(problem, x, params.kernel());
+  const std::vector<SinCos> rz = measurementRotations(problem);
+  Evaluation ev = evaluate(problem, x, params.kernel(), rz);
   rep.initial_chi2 = rep.final_chi2 = ev.chi2;
   rep.initial_cost = rep.final_cost = ev.cost;
   rep.active_sq_residuals = ev.active;
@@ -216,7 +242,7 @@ OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimi
   else if (rep.free_nodes == 0 || problem.edges.empty())
     out = {OptimizationStatus::NothingToOptimize, "no free pose or no edge"};
   else
-    out = levenbergMarquardt(problem, var, params, x, ev, rep);
+    out = levenbergMarquardt(problem, var, params, rz, x, ev, rep);
 
   if (out.status != OptimizationStatus::Diverged && out.status != OptimizationStatus::NothingToOptimize)
   {

@@ -34,6 +34,8 @@ void GraphOptimizerParams::check() const
   positive(step_tolerance, "step_tolerance");
   positive(gradient_tolerance, "gradient_tolerance");
   if (window_size < 2) throw std::invalid_argument("graph_optimizer: window_size must be >= 2");
+  if (full_optimization_interval < 1)
+    throw std::invalid_argument("graph_optimizer: full_optimization_interval must be >= 1");
   if (max_iterations < 1)
     throw std::invalid_argument("graph_optimizer: max_iterations must be >= 1");
 }
@@ -48,6 +50,8 @@ void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBas
   MRPT_LOAD_CONFIG_VAR(robust_loop, bool, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_odometry_prior, bool, c, s);
   window_size = c.read_uint64_t(s, "window_size", window_size);
+  full_optimization_interval =
+      c.read_uint64_t(s, "full_optimization_interval", full_optimization_interval);
   max_iterations = c.read_uint64_t(s, "max_iterations", max_iterations);
   MRPT_LOAD_CONFIG_VAR(lm_initial_lambda, double, c, s);
   MRPT_LOAD_CONFIG_VAR(lm_max_lambda, double, c, s);
@@ -71,6 +75,8 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
           "robustify odometry-prior edges");
   c.write(s, "window_size", static_cast<uint64_t>(window_size), -1, -1,
           "newest nodes optimized per sliding-window update");
+  c.write(s, "full_optimization_interval", static_cast<uint64_t>(full_optimization_interval), -1,
+          -1, "nodes from one full optimization after loops to the next at least");
   c.write(s, "max_iterations", static_cast<uint64_t>(max_iterations), -1, -1,
           "Levenberg-Marquardt iterations at most");
   c.write(s, "lm_initial_lambda", lm_initial_lambda, -1, -1, "initial damping, relative to diag(H)");

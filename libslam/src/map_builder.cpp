@@ -29,7 +29,7 @@ void MapBuilder::insert(MapNodeId id, const mrpt::obs::CObservation2DRangeScan& 
   if (nodes_.count(id))
     throw std::invalid_argument("map: node " + std::to_string(id) + " is already inserted");
   Node node{sanitizedScan(scan, params_), vehicle_pose, {}};
-  node.contribution = computeContribution(node.scan, vehicle_pose, params_);
+  node.contribution = computeContribution(node.scan, vehicle_pose, params_, scratch_);
   {
     std::lock_guard<std::mutex> lock(grid_mutex_);
     grid_.add(node.contribution, +1);
@@ -83,7 +83,7 @@ ReinsertReport MapBuilder::reinsertMoved(const std::map<MapNodeId, mrpt::poses::
       report.unchanged++;
       continue;
     }
-    changes.push_back({&it->second, pose, computeContribution(it->second.scan, pose, params_)});
+    changes.push_back({&it->second, pose, computeContribution(it->second.scan, pose, params_, scratch_)});
     report.moved++;
   }
   if (poses.size() == 1 && report.unknown == 1)

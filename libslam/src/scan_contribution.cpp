@@ -47,6 +47,14 @@ ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& o
                                      const mrpt::poses::CPose2D& vehicle_pose,
                                      const MapParams& params)
 {
+  ContributionScratch scratch;
+  return computeContribution(obs, vehicle_pose, params, scratch);
+}
+
+ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& obs,
+                                     const mrpt::poses::CPose2D& vehicle_pose,
+                                     const MapParams& params, ContributionScratch& scratch_memory)
+{
   if (!std::isfinite(vehicle_pose.x()) || !std::isfinite(vehicle_pose.y()) ||
       !std::isfinite(vehicle_pose.phi()))
     throw std::invalid_argument("map: vehicle pose " + vehicle_pose.asString() + " is not finite");
@@ -68,7 +76,8 @@ ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& o
   const int cx = cellOf(sensor.x(), res), cy = cellOf(sensor.y(), res);
   const CellBox box{cx - half, cy - half, cx + half + 1, cy + half + 1};
 
-  mrpt::maps::COccupancyGridMap2D scratch;
+  // setSize() refills the grid with 0.5 and keeps its memory when it is large enough.
+  mrpt::maps::COccupancyGridMap2D& scratch = scratch_memory.grid;
   scratch.setSize(static_cast<float>(box.x0 * res), static_cast<float>(box.x1 * res),
                   static_cast<float>(box.y0 * res), static_cast<float>(box.y1 * res),
                   static_cast<float>(res), 0.5f);

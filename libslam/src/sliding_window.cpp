@@ -21,6 +21,16 @@ class SubproblemBuilder
   {
   }
 
+  void reserve(size_t nodes, size_t edges)
+  {
+    index_.reserve(nodes);
+    sub_.node_ids.reserve(nodes);
+    sub_.problem.poses.reserve(nodes);
+    sub_.problem.fixed.reserve(nodes);
+    sub_.edge_indices.reserve(edges);
+    sub_.problem.edges.reserve(edges);
+  }
+
   int addNode(PoseGraph::TNodeID id, bool fixed)
   {
     const auto [it, inserted] = index_.emplace(id, static_cast<int>(sub_.node_ids.size()));
@@ -97,6 +107,7 @@ GraphSubproblem fullSubproblem(const PoseGraph& graph, const GraphOptimizerParam
 {
   if (graph.nodeCount() == 0) throw std::invalid_argument("full optimization: empty graph");
   SubproblemBuilder builder(graph, params);
+  builder.reserve(graph.nodeCount(), graph.edgeCount());
   for (const auto id : graph.nodeIds()) builder.addNode(id, id == graph.root());
   for (size_t k = 0; k < graph.edgeCount(); ++k) builder.addEdge(k);
   return std::move(builder.result());

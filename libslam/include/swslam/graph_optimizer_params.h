@@ -23,6 +23,9 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
   bool robust_odometry_prior = false;
 
   size_t window_size = 30;  ///< newest nodes optimized per sliding-window update
+  /** A full optimization after a loop waits until this many nodes have passed since the last
+   * one (loops accepted meanwhile get the window); 1: after every node that closes a loop. */
+  size_t full_optimization_interval = 5;
 
   size_t max_iterations = 100;        ///< LM iterations (paper: 100)
   double lm_initial_lambda = 1e-4;    ///< damping relative to diag(H) at the first iteration

@@ -1,10 +1,12 @@
 #pragma once
 // Sparse normal equations H dx = -g of a pose graph, stored in 3x3 blocks: the pattern is
 // built once per problem, then each linearization only adds into fixed value slots, and
-// each damped solve reuses the symbolic factorization. Eigen's simplicial LDL^T (AMD
-// ordering) is used while its factor stays sparse, as along a trajectory with few loops;
-// when the factor is dense (an area revisited over and over), CHOLMOD's supernodal
-// Cholesky takes over, measurably faster there (doc/graph-optimization.md).
+// each damped solve reuses the symbolic factorization. The blocks are stored in a
+// fill-reducing order (AMD on the graph of the blocks, block_amd_ordering.h), so that the
+// factorization works on H as stored, with no permuted copy per solve. Eigen's simplicial
+// LDL^T is used while its factor stays sparse, as along a trajectory with few loops; when
+// the factor is dense (an area revisited over and over), CHOLMOD's supernodal Cholesky
+// takes over, measurably faster there (doc/graph-optimization.md).
 
 #include <Eigen/Core>
 #include <Eigen/CholmodSupport>
@@ -20,15 +22,17 @@ class NormalEquations
 {
  public:
   /** `free_blocks` variables of 3 dofs each; `pairs` lists the (a, b) block pairs, a != b,
-   * that edges couple (duplicates allowed). Edges touching one free variable only need
-   * the diagonal block, always present. */
+   * that edges couple (duplicates and either order allowed; a == b adds nothing). Edges
+   * touching one free variable only need the diagonal block, always present. Throws
+   * std::invalid_argument for a block index outside [0, free_blocks). */
   NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs);
 
   void setZero();
-  /** H_aa += block. */
+  /** H_aa += block (a symmetric block). */
   void addDiagonal(int a, const Eigen::Matrix3d& block);
-  /** H_ab += block (and H_ba += block^T implicitly: only the lower triangle is stored). */
+  /** H_ab += block (and H_ba += block^T implicitly: one triangle is stored). */
   void addOffDiagonal(int a, int b, const Eigen::Matrix3d& block);
+  /** g, in the variables' own order (as dx). */
   Eigen::VectorXd& gradient() { return g_; }
 
   /** Solves (H + lambda diag(H)) dx = -g. Returns false if the factorization fails. */
@@ -46,22 +50,27 @@ class NormalEquations
   static constexpr double kCholmodMinFillPerColumn = 40.0;
 
  private:
-  int slot(int row, int col) const;  // index into H_.valuePtr() of (row, col), row >= col
-  void addBlock(int row_block, int col_block, const Eigen::Matrix3d& block);
+  int slot(int row, int col) const;  // index into H_.valuePtr() of (row, col), row <= col
+  /** H_{row_block, col_block} += block, in stored (ordered) block indices, row <= col. */
+  void addStoredBlock(int row_block, int col_block, const Eigen::Matrix3d& block);
 
-  Eigen::SparseMatrix<double> H_;    // lower triangle incl. full diagonal blocks
+  std::vector<int> position_;        // per variable block, its block in H_ (AMD order)
+  Eigen::SparseMatrix<double> H_;    // upper triangle incl. the diagonal blocks', ordered
   Eigen::SparseMatrix<double> damped_;
-  std::vector<int> diagonal_slots_;  // per scalar row, slot of H(i, i)
-  Eigen::VectorXd g_;
-  /** Simplicial LDL^T that tells the size of its factor right after the symbolic analysis. */
-  struct SimplicialSolver : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
+  std::vector<int> diagonal_slots_;  // per scalar variable (own order), slot of its H(i, i)
+  Eigen::VectorXd g_;                // own order
+  Eigen::VectorXd rhs_;              // -g in stored order
+  /** Simplicial LDL^T on H as stored, that tells the size of its factor right after the
+   * symbolic analysis. */
+  struct SimplicialSolver
+      : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
   {
     double factorNonZeros() const { return m_nonZerosPerCol.cast<double>().sum(); }
   };
 
   bool use_cholmod_ = false;
   SimplicialSolver simplicial_;
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholmod_;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Upper> cholmod_;
 };
 
 }  // namespace swslam

@@ -19,12 +19,28 @@ using Pose2 = Eigen::Vector3d;  ///< (x, y, theta)
 /** Angle wrapped to (-pi, pi]. */
 double wrapAngle(double a);
 
+/** cos and sin of an angle: a pose's, shared by all its edges, or a measurement's. */
+struct SinCos
+{
+  double c = 1, s = 0;
+};
+SinCos sinCos(double angle);
+
 /** e_ij for poses xi, xj and measurement z (pose of j seen from i). */
 Eigen::Vector3d se2Error(const Pose2& xi, const Pose2& xj, const Pose2& z);
+
+/** The same, given ri = sinCos(xi.z()) and rz = sinCos(z.z()) (an optimizer computes them
+ * once per pose and per edge instead of once per edge and evaluation). */
+Eigen::Vector3d se2Error(const Pose2& xi, const Pose2& xj, const Pose2& z, SinCos ri, SinCos rz);
 
 /** e_ij and its Jacobians d e / d xi (Ji) and d e / d xj (Jj). */
 Eigen::Vector3d se2ErrorWithJacobians(const Pose2& xi, const Pose2& xj, const Pose2& z,
                                       Eigen::Matrix3d& Ji, Eigen::Matrix3d& Jj);
+
+/** The same, given ri = sinCos(xi.z()) and rz = sinCos(z.z()). */
+Eigen::Vector3d se2ErrorWithJacobians(const Pose2& xi, const Pose2& xj, const Pose2& z,
+                                      SinCos ri, SinCos rz, Eigen::Matrix3d& Ji,
+                                      Eigen::Matrix3d& Jj);
 
 /** Composition a (+) b: pose b given in the frame of a, expressed in the world frame. */
 Pose2 composePose(const Pose2& a, const Pose2& b);

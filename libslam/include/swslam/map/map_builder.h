@@ -77,6 +77,7 @@ class MapBuilder
   const MapParams params_;
   mutable std::mutex write_mutex_;
   std::map<MapNodeId, Node> nodes_;  ///< guarded by write_mutex_
+  ContributionScratch scratch_;      ///< guarded by write_mutex_
   mutable std::mutex grid_mutex_;
   SummedGrid grid_;                  ///< guarded by grid_mutex_
 };

@@ -60,10 +60,23 @@ inline int cellOf(double v, double resolution)
 mrpt::obs::CObservation2DRangeScan sanitizedScan(const mrpt::obs::CObservation2DRangeScan& obs,
                                                  const MapParams& params);
 
+/** The scratch grid computeContribution() inserts into, kept from call to call so that a
+ * map thread does not allocate (and page in) a fresh grid for every scan. One per thread. */
+struct ContributionScratch
+{
+  mrpt::maps::COccupancyGridMap2D grid;
+};
+
 /** Eq. (15)-(16) for one scan: inserts `obs` (already sanitized) seen from `vehicle_pose`
  * into an empty scratch grid with MRPT's own insertObservation (log-odds along Bresenham
  * rays, MapParams::insertionOptions()) and keeps the non-zero cells. Deterministic: the
- * same scan and pose always give the same deltas, whatever the map already holds. */
+ * same scan and pose always give the same deltas, whatever the map already holds and
+ * whatever `scratch` held before. */
+ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& obs,
+                                     const mrpt::poses::CPose2D& vehicle_pose,
+                                     const MapParams& params, ContributionScratch& scratch);
+
+/** The same with a scratch grid of its own. */
 ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& obs,
                                      const mrpt::poses::CPose2D& vehicle_pose,
                                      const MapParams& params);

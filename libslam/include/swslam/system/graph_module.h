@@ -1,7 +1,8 @@
 #pragma once
 // The graph optimization module (paper Fig. 1, sec. III): adds each new node with its edges,
 // optimizes the sliding window, looks for loops (index gap + distance), verifies them by
-// PLICP and a chi-square gate, and on an accepted loop optimizes the whole graph.
+// PLICP and a chi-square gate, and on an accepted loop optimizes the whole graph (at most
+// once per [graph_optimizer] full_optimization_interval nodes while loops keep coming).
 //
 // Threading: one thread (the graph thread, or the deterministic loop) calls addNode() and
 // optimizeAll(); graphCopy() and the counters may be called from any thread.
@@ -10,6 +11,7 @@
 #include <swslam/graph_optimizer_params.h>
 #include <swslam/loop/loop_closer.h>
 #include <swslam/pose_graph.h>
+#include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
 
 #include <mutex>
@@ -39,7 +41,8 @@ class GraphModule
               const PlicpParams& plicp);
 
   /** Adds the node (its pose re-based on the graph's estimate of the previous node), its
-   * edges and any verified loop, then optimizes the window, or everything after a loop. */
+   * edges and any verified loop, then optimizes the window, or everything after a loop
+   * (FullOptimizationSchedule). */
   GraphStep addNode(const NewNode& node);
 
   /** Optimizes the whole graph (e.g. at the end of a run). */
@@ -60,6 +63,7 @@ class GraphModule
   mutable std::mutex mutex_;
   PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
   size_t loops_ = 0;   ///< guarded by mutex_
+  FullOptimizationSchedule schedule_;  ///< only the owning thread
 };
 
 }  // namespace swslam

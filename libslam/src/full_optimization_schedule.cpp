@@ -1,0 +1,27 @@
+#include "swslam/system/full_optimization_schedule.h"
+
+#include <stdexcept>
+
+namespace swslam
+{
+FullOptimizationSchedule::FullOptimizationSchedule(size_t interval) : interval_(interval)
+{
+  if (interval == 0)
+    throw std::invalid_argument("full optimization schedule: the interval must be >= 1 node");
+}
+
+bool FullOptimizationSchedule::fullNow(size_t id, size_t accepted_loops)
+{
+  if (accepted_loops > 0) pending_ = true;
+  if (!pending_ || (last_full_ && id < *last_full_ + interval_)) return false;
+  ranFull(id);
+  return true;
+}
+
+void FullOptimizationSchedule::ranFull(size_t id)
+{
+  pending_ = false;
+  last_full_ = id;
+}
+
+}  // namespace swslam
