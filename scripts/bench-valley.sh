@@ -60,7 +60,7 @@ for log in "$carmen_dir"/*-corrected.log.gz; do
     --ground-truth "$out/$name.gt.tum" > /dev/null 2>&1
   "$bin/swslam" -c $cfg -i "$log" -g "$out/$name.gt.tum" -o "$out/$name" -d -q --no-odometry \
     --no-render > /dev/null 2>&1 || true
-  echo "$name: ATE $(field 'ATE (rmse)' "$out/$name/summary.md"), nodes $(field 'Number of graph nodes' "$out/$name/summary.md"), loops $(field 'Number of graph constraints' "$out/$name/summary.md")"
+  echo "$name: ATE $(field 'ATE (rmse)' "$out/$name/summary.md"), nodes $(field 'Number of graph nodes' "$out/$name/summary.md"), constraints (loops) $(field 'Number of graph constraints' "$out/$name/summary.md")"
 done
 "$bin/swslam" -c $cfg -i datasets/open-water/open-water.rawlog -g datasets/open-water/open-water.gt.tum \
   -o "$out/open-water" -d -q --no-render > /dev/null 2>&1
@@ -73,7 +73,7 @@ if [[ -f $telecom ]]; then
   first=$(awk -F, 'NR > 1 && $14 > 0 { print $1; exit }' "$out/telecom-after/stats.csv")
   if [[ -n $first ]]; then
     "$bin/swslam" -c $cfg -i "$telecom" -o "$out/telecom-before" -d -q --max-scans "$first" > /dev/null 2>&1
-    echo "first loop at scan $first; loops in the whole run: $(field 'Number of graph constraints' "$out/telecom-after/summary.md")"
+    echo "first loop at scan $first; constraints (loops) in the whole run: $(field 'Number of graph constraints' "$out/telecom-after/summary.md")"
     echo "map before: $out/telecom-before/render.png, after: $out/telecom-after/render.png"
   else
     echo "no loop closed"
