@@ -14,7 +14,7 @@ double beamAngle(size_t i, size_t n, double aperture, bool right_to_left)
   return right_to_left ? a : -a;
 }
 
-Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double min_range)
+void checkObservationGeometry(const mrpt::obs::CObservation2DRangeScan& obs)
 {
   const size_t n = obs.getScanSize();
   const std::string who = "scan '" + obs.sensorLabel + "': ";
@@ -25,7 +25,12 @@ Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double m
   if (!(obs.maxRange > 0) || !std::isfinite(obs.maxRange))
     throw std::invalid_argument(who + "max range " + std::to_string(obs.maxRange) +
                                 " is not a positive finite number");
+}
 
+Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double min_range)
+{
+  checkObservationGeometry(obs);
+  const size_t n = obs.getScanSize();
   Scan s;
   s.sensor_pose = mrpt::poses::CPose2D(obs.sensorPose);
   s.timestamp = obs.timestamp;

@@ -63,7 +63,7 @@ FeedResult SlamSystem::feed(ScanInput input)
   }
   try
   {
-    (void)scanFromObservation(*input.observation, params_.tracking.min_range);
+    checkObservationGeometry(*input.observation);
   }
   catch (const std::invalid_argument& e)
   {

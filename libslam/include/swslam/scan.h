@@ -52,6 +52,9 @@ struct Scan
  * (0, 2*pi], validity array of another size). A scan with no valid ray is returned empty. */
 Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double min_range = 0.0);
 
+/** The geometry checks of scanFromObservation alone (cheap: no ray is converted). */
+void checkObservationGeometry(const mrpt::obs::CObservation2DRangeScan& obs);
+
 /** Angle [rad] of beam `i` of `n` over `aperture`, counter-clockwise, as MRPT defines it. */
 double beamAngle(size_t i, size_t n, double aperture, bool right_to_left = true);
 
