@@ -23,3 +23,16 @@ TEST(ProgressBar, UnknownEtaAndOutOfRangeFractions)
   EXPECT_NE(ProgressBar::format(2.0, 10, 1.0, "").find("100%"), std::string::npos);
   EXPECT_NE(ProgressBar::format(std::nan(""), 10, 1.0, "").find("  0%"), std::string::npos);
 }
+
+TEST(ProgressBar, DueOnlyWhenEnabledAndNotJustDrawn)
+{
+  ProgressBar off(stderr, false);
+  EXPECT_FALSE(off.due());
+  std::FILE* sink = std::fopen("/dev/null", "w");
+  ASSERT_NE(sink, nullptr);
+  ProgressBar on(sink, true);
+  EXPECT_TRUE(on.due());
+  on.update(0.5, 10);
+  EXPECT_FALSE(on.due());  // redrawn at most every 200 ms
+  std::fclose(sink);
+}

@@ -84,6 +84,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
       read++;
       if (r.status == FeedStatus::Stopped) break;
       if (!r.ok()) skips.report(r.status, read - 1, r.message);
+      if (!bar.due()) continue;  // the status is gathered only when the bar redraws
       const SystemStatus st = slam->status();
       bar.update(source->fractionRead(), st.scans,
                  std::to_string(st.nodes) + " nodes " + std::to_string(st.loops) + " loops");

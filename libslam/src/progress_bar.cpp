@@ -33,11 +33,15 @@ std::string ProgressBar::format(double fraction, size_t scans, double elapsed_s,
   return extra.empty() ? buf : std::string(buf) + " " + extra;
 }
 
+bool ProgressBar::due() const
+{
+  return enabled_ && (!drawn_ || std::chrono::steady_clock::now() - last_draw_ >= std::chrono::milliseconds(200));
+}
+
 void ProgressBar::update(double fraction, size_t scans, const std::string& extra)
 {
-  if (!enabled_) return;
+  if (!due()) return;
   const auto now = std::chrono::steady_clock::now();
-  if (drawn_ && now - last_draw_ < std::chrono::milliseconds(200)) return;
   last_draw_ = now;
   drawn_ = true;
   const double elapsed = std::chrono::duration<double>(now - start_).count();

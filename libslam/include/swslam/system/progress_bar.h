@@ -15,6 +15,8 @@ class ProgressBar
   ProgressBar(std::FILE* out, bool enabled);
   /** `fraction` of the input done, `scans` processed so far, `extra` appended (e.g. nodes). */
   void update(double fraction, size_t scans, const std::string& extra = {});
+  /** True if update() would draw now (so callers can skip gathering its figures). */
+  bool due() const;
   /** Clears the line. */
   void done();
 
