@@ -29,7 +29,7 @@ import tempfile
 COLUMNS = ["scan", "timestamp", "source", "valid_rays", "correspondences", "match_sq_residuals",
            "active_sq_residuals", "match_ms", "tracking_ms", "graph_ms", "map_ms", "keyframe",
            "new_node", "loops", "full_optimization"]
-SOURCES = ("first", "match", "odometry", "constant_motion")
+SOURCES = ("first", "match", "searched", "odometry", "constant_motion")
 INT_RE = re.compile(r"[0-9]+")
 FLOAT_RE = re.compile(r"[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?")
 
@@ -144,7 +144,7 @@ def fig6(plt, cols, x, xlabel):
 
 
 def fig7(plt, cols, x, xlabel):
-    matched = [s == "match" for s in cols["source"]]
+    matched = [s in ("match", "searched") for s in cols["source"]]
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6))
     top.plot(x, cols["active_sq_residuals"], lw=0.8, label="graph: sum of w r^2 (eq. 11)")
     top.plot(x, only_where(cols["match_sq_residuals"], matched), lw=0.5, alpha=0.7,

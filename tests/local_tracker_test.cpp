@@ -169,6 +169,100 @@ TEST(LocalTracker, MovedKeyframesMoveLaterScans)
   EXPECT_NEAR(step.pose.x(), 10 + ((-path[0]) + path[1]).x(), 0.02);
 }
 
+namespace
+{
+/** Around an ellipse in the room, 0.5 m per scan, the heading swinging +-30 deg about the
+ * tangent from one scan to the next: turns of about 60 deg that alternate, so the last motion
+ * predicts the next one badly (as on the subsampled CARMEN logs). */
+std::vector<CPose2D> wigglingPath(int n)
+{
+  std::vector<CPose2D> path;
+  for (int k = 0; k < n; k++)
+  {
+    const double s = 0.1 * k, x = 6 * std::cos(s), y = 3.5 * std::sin(s);
+    const double tangent = std::atan2(3.5 * std::cos(s), -6 * std::sin(s));
+    path.emplace_back(x, y, tangent + (k % 2 ? 1 : -1) * 30 * M_PI / 180);
+  }
+  return path;
+}
+
+/** Largest position and heading error of a tracked path against the truth (first pose = origin). */
+std::pair<double, double> worstError(LocalTracker& tracker, const std::vector<CPose2D>& path,
+                                     size_t& searched)
+{
+  std::mt19937 rng(9);
+  const auto world = test::roomWorld();
+  double worst_xy = 0, worst_th = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    const auto obs = test::simulateObservation(world, path[k], 181, M_PI, 30, 0.02, rng);
+    const auto step = tracker.process(obs);
+    searched += step.source == TrackingSource::Searched;
+    const CPose2D truth = (-path[0]) + path[k];
+    worst_xy = std::max(worst_xy, (step.pose.translation() - truth.translation()).norm());
+    worst_th = std::max(worst_th, std::abs(std::remainder(step.pose.phi() - truth.phi(), 2 * M_PI)));
+  }
+  return {worst_xy, worst_th};
+}
+}  // namespace
+
+TEST(LocalTracker, LargeUnpredictedTurnsAreTrackedByTheSearch)
+{
+  const auto path = wigglingPath(40);
+  size_t searched = 0;
+  LocalTracker tracker{TrackingParams(), PlicpParams(), CorrelativeParams()};
+  const auto [xy, th] = worstError(tracker, path, searched);
+  EXPECT_LT(xy, 0.15);
+  EXPECT_LT(th, 2 * M_PI / 180);
+  EXPECT_GT(searched, 10u);  // the turn alternates every scan
+
+  CorrelativeParams off;
+  off.enabled = false;
+  size_t none = 0;
+  LocalTracker plain(TrackingParams(), PlicpParams(), off);
+  const auto [xy_off, th_off] = worstError(plain, path, none);
+  EXPECT_EQ(none, 0u);
+  EXPECT_TRUE(xy_off > 0.5 || th_off > 10 * M_PI / 180)
+      << "PLICP from the last motion alone should lose this path (" << xy_off << " m, "
+      << th_off * 180 / M_PI << " deg)";
+}
+
+TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)
+{
+  // An older node moved by 0.6 m: its dense match from the (now wrong) estimate converges to
+  // the truth, 0.6 m from the guess, and the gate drops it.
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(60);
+  for (double gate : {0.3, 10.0})
+  {
+    std::mt19937 rng(6);
+    TrackingParams tp;
+    tp.dense_gate_xy = gate;
+    LocalTracker tracker(tp, PlicpParams());
+    size_t moved = 0, edges_to_moved = 0, dense = 0;
+    for (size_t k = 0; k < path.size(); k++)
+    {
+      if (k == 40)
+      {
+        moved = tracker.keyframes().size() - 2;
+        tracker.setKeyframePose(moved, tracker.keyframes()[moved].pose + CPose2D(0.6, 0, 0));
+      }
+      const auto step = tracker.process(scanAt(world, path[k], CPose2D(), rng));
+      for (const auto& e : step.edges)
+      {
+        if (e.kind != EdgeKind::DenseNeighbour || k < 40) continue;
+        dense++;
+        edges_to_moved += e.from == moved;
+      }
+    }
+    EXPECT_GT(dense, 5u) << "gate " << gate;
+    if (gate < 1)
+      EXPECT_EQ(edges_to_moved, 0u);
+    else
+      EXPECT_GT(edges_to_moved, 0u);
+  }
+}
+
 TEST(LocalTracker, InformationIsTheInverseCovarianceWithAFloor)
 {
   Eigen::Matrix3d cov;

@@ -134,3 +134,31 @@ TEST(PlicpCorrespondences, PseudoAngleIsMonotoneInTheAngle)
   EXPECT_NEAR(pseudoAngle(0, 1), 1, 1e-15);
   EXPECT_NEAR(pseudoAngle(0, -1), -1, 1e-15);
 }
+
+TEST(PlicpCorrespondences, CloseSurfacesOfDenseScansStillDefineALine)
+{
+  // 361 beams over 180 deg, everything 0.3 m away: 8 rays span 2 cm, short of a 0.2 m
+  // segment. The segment then ends at the 8th ray (the scan's end, walking off it), so that
+  // a robot close to a wall keeps its correspondences there.
+  mrpt::obs::CObservation2DRangeScan obs;
+  obs.aperture = static_cast<float>(M_PI);
+  obs.maxRange = 20;
+  obs.resizeScan(361);
+  for (size_t i = 0; i < 361; i++)
+  {
+    obs.setScanRange(i, 0.3f);
+    obs.setScanRangeValidity(i, true);
+  }
+  const Scan s = scanFromObservation(obs);
+  EXPECT_EQ(segmentEnd(s, false, 100, +1, 0.2), 108);
+  EXPECT_EQ(segmentEnd(s, false, 100, -1, 0.2), 92);
+  EXPECT_EQ(segmentEnd(s, false, 357, +1, 0.2), 360);
+  EXPECT_EQ(segmentEnd(s, false, 360, +1, 0.2), -1);
+  EXPECT_EQ(segmentEnd(s, false, 100, +1, 0.0), 101);  // Censi's neighbour
+  const ReferenceIndex index(s, 0.2);
+  std::vector<Eigen::Vector2d> pts(s.points.begin(), s.points.end());
+  for (auto& p : pts) p *= 1.01;  // 3 mm behind the surface
+  const auto found = findCorrespondences(s, index, pts, 0.5);
+  EXPECT_EQ(found.size(), s.size());
+  for (const auto& c : found) EXPECT_NE(c.j2, -1);
+}

@@ -30,7 +30,7 @@ good=$work/stats.csv
   # scan (graph and map work), a loop edge at scan 300.
   awk 'BEGIN {
     for (k = 0; k < 400; k++) {
-      src = k == 0 ? "first" : (k % 97 == 0 ? "odometry" : (k % 131 == 0 ? "constant_motion" : "match"));
+      src = k == 0 ? "first" : (k % 97 == 0 ? "odometry" : (k % 131 == 0 ? "constant_motion" : (k % 89 == 0 ? "searched" : "match")));
       node = k % 10 == 0;
       printf "%d,%.6f,%s,%d,%d,%.6g,%.6g,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d\n", k, 1700000000 + k / 40.0,
         src, 400 + 300 * sin(k / 30.0), 350 + 250 * sin(k / 30.0), 0.2 + 0.1 * cos(k / 7.0),
@@ -75,7 +75,7 @@ head -3 "$good" > "$work/head.csv"
 { cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,,4.5,0.3,0.1,0,0,0,0,0,0"; } |
   bad missing "missing.csv:4: column 'match_sq_residuals': missing value"
 { cat "$work/head.csv"; echo "3,1700000000.075,guess,400,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0"; } |
-  bad source "source.csv:4: column 'source': 'guess' is not one of first|match|odometry|constant_motion"
+  bad source "source.csv:4: column 'source': 'guess' is not one of first|match|searched|odometry|constant_motion"
 { cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,4.5,nan,0.1,0,0,0,0,0,0"; } |
   bad nan "nan.csv:4: column 'match_ms': 'nan' is not a finite number"
 { cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,4.5,0.3,0.1"; } |

@@ -1,5 +1,6 @@
 #include "swslam/tracking/local_tracker.h"
 
+#include "swslam/tracking/searched_match.h"
 #include "swslam/tracking/sensor_frame.h"
 
 #include <Eigen/Dense>
@@ -18,6 +19,7 @@ const char* toString(TrackingSource s)
   {
     case TrackingSource::First: return "first";
     case TrackingSource::Match: return "match";
+    case TrackingSource::Searched: return "searched";
     case TrackingSource::Odometry: return "odometry";
     case TrackingSource::ConstantMotion: return "constant_motion";
   }
@@ -31,9 +33,51 @@ Eigen::Matrix3d informationFromCovariance(const Eigen::Matrix3d& cov, double min
   return es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
 }
 
-LocalTracker::LocalTracker(const TrackingParams& tracking, const PlicpParams& plicp)
-    : tracking_(tracking), plicp_(plicp)
+LocalTracker::LocalTracker(const TrackingParams& tracking, const PlicpParams& plicp,
+                           const CorrelativeParams& correlative)
+    : tracking_(tracking), plicp_(plicp), correlative_(correlative)
 {
+}
+
+std::vector<correlative::Ray> LocalTracker::submapRays() const
+{
+  // The last keyframes' rays up to max_range, in the last keyframe's sensor frame:
+  // s_last^-1 (+) x_last^-1 (+) x_k (+) s_k.
+  const Keyframe& last = keyframes_.back();
+  const CPose2D to_last_sensor = -(last.pose + last.sensor_pose);
+  std::vector<correlative::Ray> out;
+  const size_t n = static_cast<size_t>(correlative_.submap_keyframes);
+  for (size_t k = keyframes_.size() > n ? keyframes_.size() - n : 0; k < keyframes_.size(); k++)
+  {
+    const Keyframe& kf = keyframes_[k];
+    const CPose2D t = to_last_sensor + (kf.pose + kf.sensor_pose);
+    const Eigen::Vector2d origin(t.x(), t.y());
+    for (const auto& p : kf.scan->scan.points)
+    {
+      if (p.norm() > correlative_.max_range) continue;
+      double x, y;
+      t.composePoint(p.x(), p.y(), x, y);
+      out.push_back({origin, {x, y}});
+    }
+  }
+  return out;
+}
+
+MatchResult LocalTracker::matchLast(const Scan& scan, const CPose2D& guess, TrackingStep& step)
+{
+  const Keyframe& last = keyframes_.back();
+  MatchResult m = matchScans(*last.scan, scan, guess, plicp_);
+  if (!correlative_.enabled || !predictionFailed(m, guess, correlative_)) return m;
+  if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
+  {
+    search_pyramid_ = std::make_shared<const correlative::ScorePyramid>(
+        searchPyramid(submapRays(), correlative_));
+    search_pyramid_keyframe_ = last.id;
+  }
+  const SearchedMatch s = searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_);
+  step.searched = true;
+  if (s.replaced) step.source = TrackingSource::Searched;
+  return s.match;
 }
 
 Keyframe& LocalTracker::addKeyframe(const Scan& scan, const CPose2D& pose)
@@ -58,9 +102,14 @@ std::optional<TrackerEdge> LocalTracker::matchEdge(const Keyframe& from, const K
                                                    const Scan& scan, EdgeKind kind) const
 {
   // Guess from the current estimates; PLICP works in the sensor frame.
-  const CPose2D guess = to.pose - from.pose;
-  const MatchResult m = matchScans(*from.scan, scan, sensorMotion(from.sensor_pose, guess), plicp_);
+  const CPose2D guess = sensorMotion(from.sensor_pose, to.pose - from.pose);
+  const MatchResult m = matchScans(*from.scan, scan, guess, plicp_);
   if (!m.ok()) return std::nullopt;
+  // The chain between recent nodes is accurate to centimetres: a match far from it found
+  // another local minimum (low overlap, repeated structure), not a correction.
+  if ((m.pose.translation() - guess.translation()).norm() > tracking_.dense_gate_xy ||
+      std::abs(std::remainder(m.pose.phi() - guess.phi(), 2 * M_PI)) > tracking_.dense_gate_theta)
+    return std::nullopt;
   TrackerEdge e;
   e.from = from.id;
   e.to = to.id;
@@ -101,14 +150,12 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   const CPose2D motion = odometry_increment ? *odometry_increment : last_motion_;
   const CPose2D predicted = relative_ + motion;
   const auto t0 = std::chrono::steady_clock::now();
-  step.match = matchScans(*last.scan, scan, sensorMotion(last.sensor_pose, predicted), plicp_);
+  step.source = TrackingSource::Match;
+  step.match = matchLast(scan, sensorMotion(last.sensor_pose, predicted), step);
   step.match_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CPose2D rel = predicted;
   if (step.match.ok())
-  {
     rel = vehicleMotion(last.sensor_pose, step.match.pose);
-    step.source = TrackingSource::Match;
-  }
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   last_motion_ = rel - relative_;
@@ -123,7 +170,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   const size_t prev_id = keyframes_.back().id;
   Keyframe& node = addKeyframe(scan, step.pose);
   const Keyframe& previous = keyframes_[prev_id];
-  if (step.source == TrackingSource::Match)
+  if (step.match.ok())
   {
     TrackerEdge e{prev_id, node.id, rel, Eigen::Matrix3d::Identity(), EdgeKind::Consecutive};
     e.information = informationFromCovariance(

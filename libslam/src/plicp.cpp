@@ -82,7 +82,11 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
   const auto errors = plicp::lineErrors(ref, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
-  for (double e : errors) res.sum_sq_residuals += e * e;
+  for (double e : errors)
+  {
+    res.sum_sq_residuals += e * e;
+    if (e < 3 * params.range_sigma) res.inliers++;
+  }
   std::vector<plicp::CovarianceTerm> cov_terms;
   cov_terms.reserve(kept.size());
   for (const auto& k : kept)

@@ -129,14 +129,16 @@ int segmentEnd(const Scan& ref, bool circular, int j1, int step, double min_segm
   const int n = static_cast<int>(ref.size());
   constexpr int kMaxWalk = 8;  // rays walked along the scan to reach min_segment
   const double min2 = min_segment * min_segment;
+  int last = -1;
   for (int s = 1; s <= kMaxWalk && s < n; s++)
   {
     int k = j1 + step * s;
     if (circular) k = (k + n) % n;
-    if (k < 0 || k >= n || k == j1) return -1;
+    if (k < 0 || k >= n || k == j1) break;
     if ((ref.points[k] - ref.points[j1]).squaredNorm() >= min2) return k;
+    last = k;
   }
-  return -1;
+  return last;  // none that far: the farthest walked (close surfaces, dense beams)
 }
 
 namespace

@@ -25,7 +25,7 @@ void nameThisThread(const char* name) { pthread_setname_np(pthread_self(), name)
 SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
     : params_(params),
       mode_(mode),
-      tracker_(params.tracking, params.plicp),
+      tracker_(params.tracking, params.plicp, params.correlative),
       graph_(params.graph_optimizer, params.loop_closure, params.plicp),
       map_(params.map),
       scan_queue_(static_cast<size_t>(params.system.input_queue_capacity))

@@ -17,6 +17,7 @@ std::vector<std::pair<std::string, Options*>> modulesOf(Params& p)
 {
   return {{"plicp", &p.plicp},
           {"tracking", &p.tracking},
+          {"correlative", &p.correlative},
           {"carmen", &p.carmen},
           {"graph_optimizer", &p.graph_optimizer},
           {"loop_closure", &p.loop_closure},

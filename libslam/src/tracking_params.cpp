@@ -16,6 +16,9 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   MRPT_LOAD_CONFIG_VAR_CS(dense_radius, double);
   MRPT_LOAD_CONFIG_VAR_CS(max_dense_edges, int);
   MRPT_LOAD_CONFIG_VAR_CS(dense_max_index_gap, int);
+  MRPT_LOAD_CONFIG_VAR_CS(dense_gate_xy, double);
+  dense_gate_theta =
+      mrpt::DEG2RAD(c.read_double(s, "dense_gate_theta_DEG", mrpt::RAD2DEG(dense_gate_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(lost_prior_sigma_xy, double);
   lost_prior_sigma_theta = mrpt::DEG2RAD(
       c.read_double(s, "lost_prior_sigma_theta_DEG", mrpt::RAD2DEG(lost_prior_sigma_theta)));
@@ -28,6 +31,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(dense_radius >= 0, "dense_radius must be >= 0");
   require(max_dense_edges >= 0, "max_dense_edges must be >= 0");
   require(dense_max_index_gap >= 1, "dense_max_index_gap must be >= 1");
+  require(dense_gate_xy > 0 && dense_gate_theta > 0, "dense_gate_xy and dense_gate_theta_DEG must be > 0");
   require(lost_prior_sigma_xy > 0 && lost_prior_sigma_theta > 0, "lost_prior_sigma_* must be > 0");
 }
 
@@ -39,6 +43,8 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(dense_radius, "[m] a new node is matched with every node this close");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_dense_edges, "at most this many dense edges per node, nearest first");
   MRPT_SAVE_CONFIG_VAR_COMMENT(dense_max_index_gap, "dense edges only to the last this many nodes (older ones: loop candidates)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(dense_gate_xy, "[m] a dense match farther than this from the tracked estimate is dropped...");
+  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("dense_gate_theta_DEG", dense_gate_theta, "[deg] ...or turned more than this");
   MRPT_SAVE_CONFIG_VAR_COMMENT(lost_prior_sigma_xy, "[m] std of the weak prior edge of a node made without a match");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("lost_prior_sigma_theta_DEG", lost_prior_sigma_theta, "[deg] same for rotation");
 }

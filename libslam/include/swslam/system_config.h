@@ -3,6 +3,7 @@
 // section per module, strictly (unknown sections and keys are errors naming them).
 
 #include <swslam/carmen_log.h>
+#include <swslam/correlative/correlative_params.h>
 #include <swslam/graph_optimizer_params.h>
 #include <swslam/loop/loop_closure_params.h>
 #include <swslam/map/map_params.h>
@@ -22,6 +23,7 @@ struct SystemParams
 {
   PlicpParams plicp;    ///< [plicp]
   TrackingParams tracking;  ///< [tracking]
+  CorrelativeParams correlative;  ///< [correlative]
   CarmenParams carmen;  ///< [carmen]
   GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
   LoopClosureParams loop_closure;  ///< [loop_closure]

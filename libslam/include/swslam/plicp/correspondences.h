@@ -55,13 +55,15 @@ std::vector<Correspondence> findCorrespondencesBruteForce(
 
 /** The second reference point j2 that, with j1, defines the local line. On each side of j1
  * along the scan (wrapping on circular scans) take the first ray at least `min_segment`
- * from j1 (walking at most 8 rays); of the two, the one closer to `p`; -1 if neither exists.
- * With min_segment = 0 this is Censi's choice, the closer of j1-1 and j1+1. A longer segment
- * keeps range noise from tilting the normal on dense scans (doc/plicp.md). */
+ * from j1, walking at most 8 rays, or the 8th if none is that far; of the two sides, the end
+ * closer to `p`; -1 if the scan has no other ray. With min_segment = 0 this is Censi's choice,
+ * the closer of j1-1 and j1+1. A longer segment keeps range noise from tilting the normal on
+ * dense scans (doc/plicp.md). */
 int secondPoint(const Scan& ref, bool circular, int j1, const Eigen::Vector2d& p,
                 double min_segment);
 
-/** The first ray from j1 in direction `step` (+1/-1) at least `min_segment` away, or -1. */
+/** The first ray from j1 in direction `step` (+1/-1) at least `min_segment` away, walking at
+ * most 8 rays; if none is, the last ray walked; -1 if there is none in that direction. */
 int segmentEnd(const Scan& ref, bool circular, int j1, int step, double min_segment);
 
 }  // namespace swslam::plicp

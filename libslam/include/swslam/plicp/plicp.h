@@ -21,8 +21,8 @@ struct PlicpParams : public mrpt::config::CLoadableOptions
   double epsilon_theta = 1e-4;       ///< [rad] (ini: epsilon_theta_DEG) and its rotation below
   double max_correspondence_dist = 1.0;  ///< [m] farther point pairs are not matched ...
   double initial_correspondence_dist = 4.0;  ///< [m] ... after a coarse-to-fine start from this
-  double coarse_start_fraction = 0.5;  ///< start coarse if the guess matches fewer points than this
-  double retry_below_inlier_fraction = 0.25;  ///< retry from rotated guesses below this inlier fraction
+  double coarse_start_fraction = 0.0;  ///< start coarse if the guess matches fewer points than this (0: never)
+  double retry_below_inlier_fraction = 0.0;  ///< retry from rotated guesses below this inlier fraction (0: never)
   int retry_rotations = 3;                ///< retries: the guess turned by +-1..k steps...
   double retry_rotation_step = 20.0 * M_PI / 180;  ///< [rad] ...of this (ini: retry_rotation_step_DEG)
   double retry_min_gain = 3.0;            ///< a retry wins only with this many times the inliers
@@ -58,6 +58,7 @@ struct MatchResult
   int iterations = 0;
   size_t ref_valid_rays = 0, cur_valid_rays = 0;
   size_t correspondences = 0;   ///< valid correspondences at the end
+  size_t inliers = 0;  ///< of them, those within 3 range_sigma of the reference surface
   double sum_sq_residuals = 0;  ///< sum of squared point-to-line distances at the end [m^2]
   std::string message;          ///< why it failed, when it did
 

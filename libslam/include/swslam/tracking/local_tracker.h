@@ -4,6 +4,8 @@
 // Past a translation or rotation threshold a new keyframe (graph node) is made; it is
 // connected to the previous node and, densely, to every node within a radius.
 
+#include <swslam/correlative/correlative_params.h>
+#include <swslam/correlative/score_grid.h>
 #include <swslam/edge_kind.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/tracking/tracking_params.h>
@@ -42,6 +44,7 @@ enum class TrackingSource
 {
   First,           ///< the first scan: the map origin
   Match,           ///< PLICP against the keyframe converged
+  Searched,        ///< the prediction failed; PLICP from a correlative search's pose won
   Odometry,        ///< the match failed: previous pose moved by the odometry increment
   ConstantMotion,  ///< the match failed, no odometry: previous pose moved by the last motion
 };
@@ -57,14 +60,16 @@ struct TrackingStep
   bool new_keyframe = false;
   std::vector<TrackerEdge> edges;  ///< the new node's edges
   size_t dense_matches = 0;        ///< dense-neighbour matches tried for the new node
-  double match_time = 0;           ///< [s] spent matching against the keyframe
+  bool searched = false;           ///< the correlative search ran (source says if it won)
+  double match_time = 0;           ///< [s] spent matching against the keyframe (search included)
   size_t valid_rays = 0;           ///< valid rays of this scan
 };
 
 class LocalTracker
 {
  public:
-  LocalTracker(const TrackingParams& tracking, const PlicpParams& plicp);
+  LocalTracker(const TrackingParams& tracking, const PlicpParams& plicp,
+               const CorrelativeParams& correlative = CorrelativeParams());
 
   /** Tracks one scan. `odometry_increment` is the vehicle motion since the previous scan, if
    * known. Throws std::invalid_argument for an observation with inconsistent geometry (see
@@ -83,9 +88,19 @@ class LocalTracker
                                        EdgeKind kind) const;
   TrackerEdge priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
+  /** The match of `scan` against the last keyframe from `guess` (sensor frame), re-aligned by
+   * the correlative search when its prediction failed. */
+  MatchResult matchLast(const Scan& scan, const mrpt::poses::CPose2D& guess, TrackingStep& step);
+  /** Rays of the last submap_keyframes keyframes in the last keyframe's sensor frame. */
+  std::vector<correlative::Ray> submapRays() const;
 
   TrackingParams tracking_;
   PlicpParams plicp_;
+  CorrelativeParams correlative_;
+  /** The score pyramid of the submap ending at the last keyframe, built the first time a scan
+   * is searched against that keyframe. */
+  std::shared_ptr<const correlative::ScorePyramid> search_pyramid_;
+  size_t search_pyramid_keyframe_ = 0;
   std::vector<Keyframe> keyframes_;
   mrpt::poses::CPose2D relative_;     ///< last scan's vehicle pose relative to the last keyframe
   mrpt::poses::CPose2D last_motion_;  ///< vehicle motion between the last two scans

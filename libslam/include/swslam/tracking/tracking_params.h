@@ -15,6 +15,8 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double dense_radius = 4.0;           ///< [m] a new node is matched with every node this close (Fig. 2)
   int max_dense_edges = 8;             ///< at most this many dense edges per node, nearest first
   int dense_max_index_gap = 30;        ///< dense edges only to the last this many nodes (older: loops)
+  double dense_gate_xy = 0.3;          ///< [m] a dense match farther than this from the tracked estimate is dropped...
+  double dense_gate_theta = 5.0 * M_PI / 180;  ///< [rad] ...or turned more (ini: dense_gate_theta_DEG)
   double lost_prior_sigma_xy = 1.0;    ///< [m] std of the weak prior edge when a node is made without a match
   double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
 

@@ -1,0 +1,68 @@
+#pragma once
+// The score grid of correlative scan matching (Olson 2009): each cell holds how well a point
+// there fits a reference point set, exp(-d^2 / 2 sigma^2) with d the distance from the cell's
+// centre to the nearest reference point, quantized to 0..255; optionally a negative value
+// where the reference's rays saw free space. Its max-pyramid gives the upper bounds of the
+// branch-and-bound search (search.h).
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace swslam::correlative
+{
+struct ScoreGrid
+{
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< lower-left corner of cell (0, 0)
+  double resolution = 0.1;                           ///< [m] cell side
+  int width = 0, height = 0;
+  int pad_cells = 0;           ///< empty cells around the data's reach on every side
+  std::vector<int16_t> cells;  ///< row-major, cell (x, y) at y * width + x
+
+  /** The cell's value, 0 outside the grid. */
+  int at(int x, int y) const
+  {
+    if (x < 0 || y < 0 || x >= width || y >= height) return 0;
+    return cells[static_cast<size_t>(y) * width + x];
+  }
+  /** The cell holding point p (may be outside the grid). */
+  Eigen::Vector2i cellOf(const Eigen::Vector2d& p) const;
+};
+
+/** The grid of `points` with cells of `resolution` and kernel `sigma`: cell value
+ * round(255 exp(-d^2 / 2 sigma^2)), d from the cell's centre to the nearest point, and 0
+ * beyond 3 sigma. It covers the points' bounding box plus 3 sigma, and `pad_cells` more
+ * cells on every side. Empty points give an empty grid. */
+ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution,
+                         double sigma, int pad_cells = 0);
+
+/** A reference observation: the sensor at `origin` saw a surface at `hit`. */
+struct Ray
+{
+  Eigen::Vector2d origin, hit;
+};
+
+/** Gives `free_value` (<= 0) to the cells of value 0 that the rays cross: the cells of the
+ * points origin + s (hit - origin) / |hit - origin| for s = 0, resolution/2, ... < |hit -
+ * origin|. Cells near a hit keep their kernel value; points outside the grid are skipped. A
+ * scan point in such a cell contradicts the reference (it saw through there). */
+void markFreeSpace(ScoreGrid& grid, const std::vector<Ray>& rays, int free_value);
+
+/** Level h of the pyramid has the grid's frame and size; its cell (x, y) is the largest
+ * value of level 0 over [x, x + 2^h) x [y, y + 2^h). The base grid needs 2^depth - 1 cells of
+ * padding (buildScoreGrid's pad_cells) so that no window reaching data starts outside it;
+ * with less, the constructor throws std::invalid_argument. */
+struct ScorePyramid
+{
+  std::vector<ScoreGrid> levels;  ///< levels[0] is the base grid
+  ScorePyramid(ScoreGrid base, int depth);
+  int depth() const { return static_cast<int>(levels.size()) - 1; }
+};
+
+/** The points kept for a search: within `max_range` of the origin, and each at least
+ * `min_spacing` from the previously kept one (in scan order). */
+std::vector<Eigen::Vector2d> thinPoints(const std::vector<Eigen::Vector2d>& points,
+                                        double min_spacing, double max_range);
+
+}  // namespace swslam::correlative

@@ -1,0 +1,68 @@
+#pragma once
+// Correlative scan matching by branch and bound (Olson 2009; Hess et al. 2016): the pose in a
+// window of translations and rotations that puts a scan's points on the best cells of a
+// reference's score grid, less a cost for its distance from the window's centre (the motion
+// prior). Exact over the window's lattice: the same best objective as trying every pose
+// (searchBruteForce), at a fraction of the cost.
+
+#include <swslam/correlative/score_grid.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace swslam::correlative
+{
+/** The poses tried: rotations theta = centre.z + k theta_step within +-half_theta (the whole
+ * circle once when half_theta >= pi, the step then shortened to divide it evenly), and for each
+ * the translations centre.xy + (i, j) * resolution with |i|, |j| <= half_xy / resolution.
+ * A pose [x, y, theta] maps a point p to R(theta) p + (x, y) in the grid's frame. */
+struct SearchWindow
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double half_xy = 2.0;                   ///< [m]
+  double half_theta = M_PI;               ///< [rad]
+  double theta_step = 1.0 * M_PI / 180;   ///< [rad]
+  double cost_per_m = 0;    ///< objective = score - cost_per_m |t - centre.xy| ...
+  double cost_per_rad = 0;  ///< ... - cost_per_rad |theta - centre.z|
+};
+
+/** The objective of a pose: its score less the window's costs of its offset from the centre. */
+double objective(const SearchWindow& w, double score, const Eigen::Vector3d& pose);
+
+struct SearchResult
+{
+  Eigen::Vector3d pose = Eigen::Vector3d::Zero();
+  double score = 0;             ///< mean cell value of the points / 255, in [-1, 1] (free space < 0)
+  double objective = 0;         ///< the score less the costs (what the search maximises)
+  size_t bounds_evaluated = 0;  ///< candidates scored (any level): the search's cost
+};
+
+/** The window's rotations, in the order searched. */
+std::vector<double> windowAngles(const SearchWindow& w);
+
+/** The pose of the window's lattice with the best objective among those whose score is at
+ * least `min_score`, if any.
+ * Level 0 cells are looked up as grid.cellOf(R(theta) p + centre.xy) + (i, j). The pyramid's
+ * depth bounds the search's top level (deeper levels are not needed beyond the window). */
+std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
+                                                 const std::vector<Eigen::Vector2d>& points,
+                                                 const SearchWindow& w, double min_score);
+
+/** Slow, obviously correct version: scores every pose of the lattice; ties go to the first
+ * in the order angle, then i, then j. Same best objective as searchBranchAndBound(). */
+std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,
+                                             const std::vector<Eigen::Vector2d>& points,
+                                             const SearchWindow& w, double min_score);
+
+/** Score of an arbitrary pose: the mean of grid.at(cellOf(R p + t)) / 255 over the points
+ * (0 for no points). */
+double scoreAt(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+               const Eigen::Vector3d& pose);
+
+/** Pyramid depth needed for a window: the smallest h with 2^h >= 2 half_xy / resolution + 1. */
+int depthForWindow(double half_xy, double resolution);
+
+}  // namespace swslam::correlative

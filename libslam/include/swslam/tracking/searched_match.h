@@ -1,0 +1,44 @@
+#pragma once
+// Re-alignment of a tracking match whose prediction failed (doc/tracking.md): a correlative
+// search by branch and bound over a wide window around the prediction, PLICP from its best
+// pose, and the better of the two matches by the search's score.
+
+#include <swslam/correlative/correlative_params.h>
+#include <swslam/correlative/score_grid.h>
+#include <swslam/plicp/plicp.h>
+
+#include <mrpt/poses/CPose2D.h>
+
+namespace swslam
+{
+/** The score pyramid of reference rays (in the reference sensor frame), deep enough for the
+ * search window: the kernels of their hits, and free_space_score on the cells they cross. The
+ * caller leaves out rays longer than max_range. */
+correlative::ScorePyramid searchPyramid(const std::vector<correlative::Ray>& reference,
+                                        const CorrelativeParams& p);
+
+/** The match's prediction was unreliable: the match failed, ended with fewer than
+ * trigger_inlier_fraction of the scan's points as inliers, or moved the guess (sensor
+ * frame) by more than trigger_correction_xy or trigger_correction_theta. */
+bool predictionFailed(const MatchResult& m, const mrpt::poses::CPose2D& guess,
+                      const CorrelativeParams& p);
+
+struct SearchedMatch
+{
+  MatchResult match;      ///< the chosen match
+  bool replaced = false;  ///< the match from the search's pose won
+  double first_objective = 0, searched_objective = 0;  ///< both matches' objectives (-1e9: failed or not run)
+};
+
+/** Searches the window around `guess` (the current sensor pose in the reference sensor
+ * frame, as for matchScans) with the reference's pyramid, runs PLICP from the best pose, and
+ * keeps that match only if its objective (score on the grid less the motion prior's cost) is
+ * min_score_gain above that of `first` (a failed match has none). Nothing found, or a best
+ * pose in the first match's basin (within 1.5 cells and 1.5 angle steps), keeps `first`
+ * without a second match. */
+SearchedMatch searchAndMatch(const ReferenceScan& reference,
+                             const correlative::ScorePyramid& pyramid, const Scan& cur,
+                             const mrpt::poses::CPose2D& guess, const MatchResult& first,
+                             const CorrelativeParams& p, const PlicpParams& plicp);
+
+}  // namespace swslam

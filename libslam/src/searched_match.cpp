@@ -1,0 +1,74 @@
+#include "swslam/tracking/searched_match.h"
+
+#include "swslam/correlative/search.h"
+
+#include <cmath>
+
+namespace swslam
+{
+using correlative::ScorePyramid;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+Eigen::Vector3d vec(const CPose2D& p) { return {p.x(), p.y(), p.phi()}; }
+double angleDiff(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); }
+}  // namespace
+
+ScorePyramid searchPyramid(const std::vector<correlative::Ray>& reference, const CorrelativeParams& p)
+{
+  const int depth = correlative::depthForWindow(p.window_xy, p.resolution);
+  std::vector<Eigen::Vector2d> hits;
+  hits.reserve(reference.size());
+  for (const auto& r : reference) hits.push_back(r.hit);
+  auto grid = correlative::buildScoreGrid(hits, p.resolution, p.sigma, (1 << depth) - 1);
+  if (p.free_space_score < 0)
+    correlative::markFreeSpace(grid, reference, static_cast<int>(std::lround(255 * p.free_space_score)));
+  return ScorePyramid(std::move(grid), depth);
+}
+
+bool predictionFailed(const MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
+{
+  if (!m.ok() || m.cur_valid_rays == 0) return true;
+  if (m.inliers < p.trigger_inlier_fraction * m.cur_valid_rays) return true;
+  return (m.pose.translation() - guess.translation()).norm() > p.trigger_correction_xy ||
+         angleDiff(m.pose.phi(), guess.phi()) > p.trigger_correction_theta;
+}
+
+SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid& pyramid,
+                             const Scan& cur, const CPose2D& guess, const MatchResult& first,
+                             const CorrelativeParams& p, const PlicpParams& plicp)
+{
+  SearchedMatch out;
+  out.match = first;
+  const auto points = correlative::thinPoints(cur.points, p.resolution, p.max_range);
+  const auto& grid = pyramid.levels.front();
+  correlative::SearchWindow w;
+  w.centre = vec(guess);
+  w.half_xy = p.window_xy;
+  w.half_theta = p.window_theta;
+  w.theta_step = p.theta_step;
+  w.cost_per_m = p.cost_per_m;
+  w.cost_per_rad = p.cost_per_rad;
+  auto objectiveOf = [&](const MatchResult& m) {
+    return m.ok() ? correlative::objective(w, correlative::scoreAt(grid, points, vec(m.pose)), vec(m.pose)) : -1e9;
+  };
+  out.first_objective = objectiveOf(first);
+  out.searched_objective = -1e9;
+  const auto best = correlative::searchBranchAndBound(pyramid, points, w, p.min_score);
+  if (!best) return out;
+  if (first.ok() && (best->pose.head<2>() - vec(first.pose).head<2>()).norm() < 1.5 * p.resolution &&
+      angleDiff(best->pose.z(), first.pose.phi()) < 1.5 * p.theta_step)
+    return out;
+  const MatchResult second =
+      matchScans(reference, cur, CPose2D(best->pose.x(), best->pose.y(), best->pose.z()), plicp);
+  out.searched_objective = objectiveOf(second);
+  if (second.ok() && out.searched_objective >= out.first_objective + p.min_score_gain)
+  {
+    out.match = second;
+    out.replaced = true;
+  }
+  return out;
+}
+
+}  // namespace swslam

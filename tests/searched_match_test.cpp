@@ -1,0 +1,91 @@
+// Re-alignment of a tracking match by the correlative search (tracking/searched_match.h).
+#include <swslam/tracking/searched_match.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** A CARMEN-like scan: 181 beams over 180 deg, 30 m. */
+Scan scanAt(const test::World& world, const CPose2D& pose, std::mt19937& rng)
+{
+  return scanFromObservation(test::simulateObservation(world, pose, 181, M_PI, 30, 0.02, rng));
+}
+
+std::vector<correlative::Ray> raysOf(const Scan& s)
+{
+  std::vector<correlative::Ray> rays;
+  for (const auto& p : s.points) rays.push_back({Eigen::Vector2d::Zero(), p});
+  return rays;
+}
+
+MatchResult converged(const CPose2D& pose, size_t inliers, size_t rays)
+{
+  MatchResult m;
+  m.status = MatchStatus::Converged;
+  m.pose = pose;
+  m.inliers = inliers;
+  m.cur_valid_rays = rays;
+  return m;
+}
+}  // namespace
+
+TEST(SearchedMatch, PredictionFailsOnAFailedMatchFewInliersOrALargeCorrection)
+{
+  CorrelativeParams p;  // 0.1 m, 2 deg, half the points
+  const CPose2D guess(1, 2, 0.5);
+  EXPECT_FALSE(predictionFailed(converged(guess + CPose2D(0.05, 0.05, 0.02), 60, 100), guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess, 49, 100), guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess + CPose2D(0.0, 0.11, 0.0), 60, 100), guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess + CPose2D(0, 0, 0.04), 60, 100), guess, p));
+  MatchResult failed = converged(guess, 90, 100);
+  failed.status = MatchStatus::TooFewCorrespondences;
+  EXPECT_TRUE(predictionFailed(failed, guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess, 0, 0), guess, p));
+}
+
+TEST(SearchedMatch, RecoversALargeUnpredictedMotion)
+{
+  const auto world = test::roomWorld();
+  std::mt19937 rng(4);
+  const CPose2D a(-4, 1, 0.3), motion(1.3, -0.7, 75 * M_PI / 180);
+  const PlicpParams plicp;
+  const ReferenceScan ref(scanAt(world, a, rng), plicp);
+  const Scan cur = scanAt(world, a + motion, rng);
+  const CorrelativeParams p;
+  const CPose2D guess;  // zero motion: far from the truth
+  const MatchResult first = matchScans(ref, cur, guess, plicp);
+  ASSERT_TRUE(predictionFailed(first, guess, p));
+  const auto s = searchAndMatch(ref, searchPyramid(raysOf(ref.scan), p), cur, guess, first, p, plicp);
+  ASSERT_TRUE(s.replaced);
+  ASSERT_TRUE(s.match.ok());
+  EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.05);
+  EXPECT_NEAR(s.match.pose.y(), motion.y(), 0.05);
+  EXPECT_NEAR(std::remainder(s.match.pose.phi() - motion.phi(), 2 * M_PI), 0, 0.01);
+  EXPECT_GE(s.searched_objective, s.first_objective + p.min_score_gain);
+}
+
+TEST(SearchedMatch, ARightFirstMatchIsKept)
+{
+  const auto world = test::roomWorld();
+  std::mt19937 rng(5);
+  const CPose2D a(2, -2, -0.4), motion(0.4, 0.1, 0.2);
+  const PlicpParams plicp;
+  const ReferenceScan ref(scanAt(world, a, rng), plicp);
+  const Scan cur = scanAt(world, a + motion, rng);
+  const CorrelativeParams p;
+  const CPose2D guess = motion + CPose2D(0.15, -0.1, 0.05);
+  const MatchResult first = matchScans(ref, cur, guess, plicp);
+  ASSERT_TRUE(first.ok());
+  const auto s = searchAndMatch(ref, searchPyramid(raysOf(ref.scan), p), cur, guess, first, p, plicp);
+  EXPECT_FALSE(s.replaced);
+  EXPECT_EQ(s.match.pose, first.pose);
+  EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.03);
+}
