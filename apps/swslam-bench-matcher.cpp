@@ -14,6 +14,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> gt("g", "ground-truth", "Reference poses (TUM)", true, "", "GT.tum", cmd);
   TCLAP::ValueArg<size_t> stride("s", "stride", "Pair scans k and k+K", false, 1, "K", cmd);
   TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] section)", false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> only("m", "method", "Run only this matcher (plicp, cicp-classic, cicp-lm)", false, "", "NAME", cmd);
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
@@ -26,7 +27,7 @@ int main(int argc, char** argv)
     std::cout << "# " << input.getValue() << ": " << data.scans.size() << " scans of "
               << s0.getScanSize() << " beams over " << s0.aperture * 180 / M_PI << " deg, stride "
               << stride.getValue() << "\n";
-    for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params))
+    for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params, only.getValue()))
       std::cout << swslam::formatRow(row) << std::endl;
     return 0;
   }

@@ -109,12 +109,21 @@ ScansWithTruth loadScansWithTruth(const std::string& rawlog_path,
 }
 
 std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t stride,
-                                          const PlicpParams& plicp_params)
+                                          const PlicpParams& plicp_params, const std::string& only)
 {
-  const std::vector<std::pair<std::string, MatcherFn>> methods = {
+  std::vector<std::pair<std::string, MatcherFn>> methods = {
       {"plicp", plicpMatcher(plicp_params)},
       {"cicp-classic", cicpMatcher(mrpt::slam::icpClassic)},
       {"cicp-lm", cicpMatcher(mrpt::slam::icpLevenbergMarquardt)}};
+  if (!only.empty())
+  {
+    const auto it = std::find_if(methods.begin(), methods.end(),
+                                 [&](const auto& m) { return m.first == only; });
+    if (it == methods.end())
+      throw std::invalid_argument("unknown matcher '" + only +
+                                  "' (expected plicp, cicp-classic or cicp-lm)");
+    methods = {*it};
+  }
   std::vector<MatcherRow> rows;
   for (const std::string init : {"identity", "reference"})
   {

@@ -36,10 +36,12 @@ struct MatcherRow
   double trans_median_m = 0, trans_rmse_m = 0, rot_rmse_deg = 0, frac_under_5cm = 0;
 };
 
-/** Runs every method and initial guess on pairs (k, k + stride). Errors are measured on
- * the vehicle's relative pose. */
+/** Runs every method (or only the one named `only`, if not empty) from each initial guess on
+ * pairs (k, k + stride). Errors are measured on the vehicle's relative pose. Throws
+ * std::invalid_argument for an unknown method name. */
 std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t stride,
-                                          const PlicpParams& plicp_params);
+                                          const PlicpParams& plicp_params,
+                                          const std::string& only = "");
 
 /** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
 std::string formatRow(const MatcherRow& row);
