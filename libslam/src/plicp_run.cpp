@@ -177,6 +177,27 @@ size_t inlierCount(const ReferenceScan& reference, const Scan& cur, const IcpRun
  * inliers of the first run (a low-overlap pair must not be "improved" into a wrong pose). */
 }  // namespace
 
+bool fullResolutionStep(const ReferenceScan& reference, const Scan& cur,
+                        const PlicpParams& params, IcpRun& run)
+{
+  const Scan& ref = reference.scan;
+  const auto cur_in_ref = transformed(cur, run.x);
+  auto kept = rejectOutliers(ref, cur_in_ref,
+                             findCorrespondences(ref, reference.index, cur_in_ref,
+                                                 params.max_correspondence_dist),
+                             params.max_correspondence_dist, params);
+  if (kept.size() < static_cast<size_t>(params.min_correspondences)) return false;
+  std::vector<PointToLine> terms;
+  terms.reserve(kept.size());
+  for (const auto& k : kept) terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
+  const auto next = solvePointToLine(terms, run.x);
+  if (!next || !next->allFinite()) return false;
+  run.x = *next;
+  run.kept = std::move(kept);
+  run.iterations++;
+  return true;
+}
+
 IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x0,
                       const PlicpParams& params)
 {

@@ -33,4 +33,11 @@ std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2
 IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x0,
                       const PlicpParams& params);
 
+/** One more iteration with every ray of `cur` (the run having converged on a decimated
+ * copy): correspondences at max_correspondence_dist, outlier rejection, closed-form step.
+ * On success run.x and run.kept (then indices into `cur`) are updated and it returns true;
+ * with too few correspondences or a failed solve it returns false and leaves `run` as is. */
+bool fullResolutionStep(const ReferenceScan& reference, const Scan& cur,
+                        const PlicpParams& params, IcpRun& run);
+
 }  // namespace swslam::plicp
