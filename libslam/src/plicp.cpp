@@ -88,7 +88,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
 
   // Residuals and covariance (eq. 4-10) at the final estimate.
   const auto cur_in_ref = plicp::transformed(used, x);
-  const auto errors = plicp::lineErrors(ref, cur_in_ref, kept);
+  const auto errors = plicp::lineErrors(reference, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
   for (double e : errors)

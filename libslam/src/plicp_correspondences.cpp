@@ -117,10 +117,14 @@ ReferenceIndex::ReferenceIndex(const Scan& ref, double min_segment_length)
   }
   segment_lo.resize(n);
   segment_hi.resize(n);
+  normal_lo.assign(n, Eigen::Vector2d::Zero());
+  normal_hi.assign(n, Eigen::Vector2d::Zero());
   for (int j = 0; j < n; j++)
   {
     segment_lo[j] = segmentEnd(ref, circular, j, -1, min_segment);
     segment_hi[j] = segmentEnd(ref, circular, j, +1, min_segment);
+    if (segment_lo[j] >= 0) normal_lo[j] = segmentNormal(ref.points[j], ref.points[segment_lo[j]]);
+    if (segment_hi[j] >= 0) normal_hi[j] = segmentNormal(ref.points[j], ref.points[segment_hi[j]]);
   }
 }
 

@@ -8,7 +8,9 @@ namespace swslam::plicp
 std::vector<Correspondence> keepNearestPerReference(const std::vector<Correspondence>& in,
                                                     int ref_size)
 {
-  std::vector<int> owner(ref_size, -1);  // index into `in` of the nearest match of each j1
+  // Index into `in` of the nearest match of each j1 (per-thread buffer: no allocation per call).
+  thread_local std::vector<int> owner;
+  owner.assign(ref_size, -1);
   for (int k = 0; k < static_cast<int>(in.size()); k++)
   {
     int& o = owner[in[k].j1];
@@ -26,7 +28,8 @@ std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
                                         double adaptive_quantile, double adaptive_mult)
 {
   if (in.empty()) return {};
-  std::vector<double> sorted = errors;
+  thread_local std::vector<double> sorted;  // per-thread buffer: no allocation per call
+  sorted.assign(errors.begin(), errors.end());
   auto rank = [&](double q) {
     return std::min(sorted.size() - 1,
                     static_cast<size_t>(std::ceil(q * sorted.size())) - (q > 0 ? 1 : 0));
