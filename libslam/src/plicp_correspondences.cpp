@@ -187,7 +187,7 @@ std::vector<Correspondence> findCorrespondences(const Scan& ref, const Reference
     if (best_k == kNone) continue;
     const int j2 = closerEnd(ref, index.segment_lo[best_k], index.segment_hi[best_k], p);
     if (j2 < 0) continue;
-    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
+    out.push_back({static_cast<int>(i), best_k, j2, best_d2});
   }
   return out;
 }
@@ -216,7 +216,7 @@ std::vector<Correspondence> findCorrespondencesBruteForce(
     if (best_k < 0) continue;
     const int j2 = secondPoint(ref, index.circular, best_k, cur_in_ref[i], min_segment);
     if (j2 < 0) continue;
-    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
+    out.push_back({static_cast<int>(i), best_k, j2, best_d2});
   }
   return out;
 }

@@ -16,7 +16,7 @@ struct Correspondence
   int i = -1;   ///< current point
   int j1 = -1;  ///< nearest reference point
   int j2 = -1;  ///< neighbour of j1 along the scan (see secondPoint())
-  double dist = 0;  ///< point-to-point distance from the transformed current point to j1
+  double dist2 = 0;  ///< squared point-to-point distance from the transformed current point to j1
   bool operator==(const Correspondence& o) const { return i == o.i && j1 == o.j1 && j2 == o.j2; }
 };
 
