@@ -13,20 +13,26 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> input("i", "input", "Rawlog with 2D scans", true, "", "LOG.rawlog", cmd);
   TCLAP::ValueArg<std::string> gt("g", "ground-truth", "Reference poses (TUM)", true, "", "GT.tum", cmd);
   TCLAP::ValueArg<size_t> stride("s", "stride", "Pair scans k and k+K", false, 1, "K", cmd);
-  TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] section)", false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] and [correlative] sections)", false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> only("m", "method", "Run only this matcher (plicp, plicp+search, cicp-classic, cicp-lm)", false, "", "NAME", cmd);
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     swslam::PlicpParams params;
+    swslam::CorrelativeParams search;
     if (!config.getValue().empty())
-      params = swslam::loadStrict<swslam::PlicpParams>(mrpt::config::CConfigFile(config.getValue()), "plicp");
+    {
+      const mrpt::config::CConfigFile ini(config.getValue());
+      params = swslam::loadStrict<swslam::PlicpParams>(ini, "plicp");
+      search = swslam::loadStrict<swslam::CorrelativeParams>(ini, "correlative");
+    }
     if (stride.getValue() < 1) throw std::invalid_argument("--stride must be >= 1");
     const auto data = swslam::loadScansWithTruth(input.getValue(), swslam::readTum(gt.getValue()));
     const auto& s0 = *data.scans.front();
     std::cout << "# " << input.getValue() << ": " << data.scans.size() << " scans of "
               << s0.getScanSize() << " beams over " << s0.aperture * 180 / M_PI << " deg, stride "
               << stride.getValue() << "\n";
-    for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params))
+    for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search))
       std::cout << swslam::formatRow(row) << std::endl;
     return 0;
   }

@@ -170,3 +170,48 @@ TEST(PlicpClosedForm, DegenerateCorridorKeepsTheUnconstrainedAxisAtTheAnchor)
   EXPECT_NEAR(x->z(), 0.0, 1e-6);
   EXPECT_NEAR(x->x(), 0.7, 1e-3);
 }
+
+TEST(PlicpClosedForm, SecularEquationAgreesWithTheQuarticRoots)
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int compared = 0;
+  for (int trial = 0; trial < 400; trial++)
+  {
+    Eigen::Matrix4d M;
+    Eigen::Vector4d g;
+    if (trial % 2 == 0)
+    {
+      const Eigen::Vector3d truth(5 * U(rng), 5 * U(rng), M_PI * U(rng));
+      buildCost(randomTerms(rng, truth, 4 + trial % 30, trial % 4 ? 0.5 : 0.001), M, g);
+    }
+    else  // random positive definite M and g, some with near-degenerate rotation blocks
+    {
+      Eigen::Matrix4d L = Eigen::Matrix4d::Random();
+      M = L * L.transpose() + 1e-3 * Eigen::Matrix4d::Identity();
+      if (trial % 6 == 1) M.bottomRightCorner<2, 2>() += 1e3 * Eigen::Matrix2d::Identity();
+      g = Eigen::Vector4d::Random() * (trial % 10 == 3 ? 1e-6 : 3.0);
+    }
+    const auto a = minimizeOnCircle(M, g), b = minimizeOnCircleByQuartic(M, g);
+    ASSERT_TRUE(a && b);
+    auto f = [&](const Eigen::Vector3d& x) {
+      const Eigen::Vector4d v(x.x(), x.y(), std::cos(x.z()), std::sin(x.z()));
+      return v.dot(M * v) + g.dot(v);
+    };
+    // Same minimum value (the minimizer itself may differ on exact ties).
+    EXPECT_LE(f(*a), f(*b) + 1e-9 * (1 + std::abs(f(*b)))) << "trial " << trial;
+    compared++;
+  }
+  EXPECT_EQ(compared, 400);
+}
+
+TEST(PlicpClosedForm, SecularEquationHandlesTheHardCase)
+{
+  // h = 0: u'Su on the unit circle is least along S's smallest eigenvector.
+  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
+  M(2, 2) = 3;
+  M(3, 3) = 1;
+  const auto x = minimizeOnCircle(M, Eigen::Vector4d::Zero());
+  ASSERT_TRUE(x);
+  EXPECT_NEAR(std::abs(std::sin(x->z())), 1.0, 1e-9);
+}

@@ -32,7 +32,7 @@ void expectSameAsBruteForce(const Scan& ref, const Scan& cur, const mrpt::poses:
   {
     ASSERT_EQ(fast[k], slow[k]) << "point " << slow[k].i << ": fast j1 " << fast[k].j1
                                 << " slow j1 " << slow[k].j1;
-    ASSERT_DOUBLE_EQ(fast[k].dist, slow[k].dist);
+    ASSERT_DOUBLE_EQ(fast[k].dist2, slow[k].dist2);
   }
 }
 }  // namespace

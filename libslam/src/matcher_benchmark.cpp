@@ -1,6 +1,7 @@
 #include "swslam/matcher_benchmark.h"
 
 #include "swslam/rawlog_reader.h"
+#include "swslam/tracking/searched_match.h"
 #include "swslam/tracking/sensor_frame.h"
 
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -47,6 +48,33 @@ MatcherFn plicpMatcher(const PlicpParams& params)
     const ReferenceScan ref(scanFromObservation(a), params);
     const MatchResult r = matchScans(ref, scanFromObservation(b), sensorMotion(s, guess), params);
     return Estimate{vehicleMotion(s, r.pose), r.iterations, r.ok()};
+  };
+}
+
+/** PLICP as tracking uses it: when the match says its guess was poor (predictionFailed()),
+ * a correlative search around the guess over the reference scan's rays, then PLICP from the
+ * search's best pose (searchAndMatch()). The search grid is built per pair and timed. */
+MatcherFn plicpSearchMatcher(const PlicpParams& params, const CorrelativeParams& search)
+{
+  return [params, search](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                          const CPose2D& guess) {
+    const CPose2D s(a.sensorPose);
+    const ReferenceScan ref(scanFromObservation(a), params);
+    const Scan cur = scanFromObservation(b);
+    const CPose2D g = sensorMotion(s, guess);
+    MatchResult r = matchScans(ref, cur, g, params);
+    int iterations = r.iterations;
+    if (predictionFailed(r, g, search))
+    {
+      std::vector<correlative::Ray> rays;
+      rays.reserve(ref.scan.size());
+      for (const auto& p : ref.scan.points)
+        if (p.norm() <= search.max_range) rays.push_back({Eigen::Vector2d::Zero(), p});
+      const SearchedMatch m = searchAndMatch(ref, searchPyramid(rays, search), cur, g, r, search, params);
+      if (m.replaced) iterations += m.match.iterations;
+      r = m.match;
+    }
+    return Estimate{vehicleMotion(s, r.pose), iterations, r.ok()};
   };
 }
 
@@ -109,12 +137,23 @@ ScansWithTruth loadScansWithTruth(const std::string& rawlog_path,
 }
 
 std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t stride,
-                                          const PlicpParams& plicp_params)
+                                          const PlicpParams& plicp_params, const std::string& only,
+                                          const CorrelativeParams& search_params)
 {
-  const std::vector<std::pair<std::string, MatcherFn>> methods = {
+  std::vector<std::pair<std::string, MatcherFn>> methods = {
       {"plicp", plicpMatcher(plicp_params)},
+      {"plicp+search", plicpSearchMatcher(plicp_params, search_params)},
       {"cicp-classic", cicpMatcher(mrpt::slam::icpClassic)},
       {"cicp-lm", cicpMatcher(mrpt::slam::icpLevenbergMarquardt)}};
+  if (!only.empty())
+  {
+    const auto it = std::find_if(methods.begin(), methods.end(),
+                                 [&](const auto& m) { return m.first == only; });
+    if (it == methods.end())
+      throw std::invalid_argument("unknown matcher '" + only +
+                                  "' (expected plicp, plicp+search, cicp-classic or cicp-lm)");
+    methods = {*it};
+  }
   std::vector<MatcherRow> rows;
   for (const std::string init : {"identity", "reference"})
   {

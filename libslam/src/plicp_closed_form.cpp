@@ -151,16 +151,72 @@ std::vector<double> quarticRealRoots(const std::array<double, 5>& c)
   return roots;
 }
 
-std::optional<Eigen::Vector3d> minimizeOnCircle(const Eigen::Matrix4d& M, const Eigen::Vector4d& g)
+namespace
 {
-  if (!M.allFinite() || !g.allFinite()) return std::nullopt;
-  const Reduced r = reduce(M, g);
-  if (!r.Ainv.allFinite()) return std::nullopt;
+/** The unit vector of least u'Su + h'u from the Lagrange condition 2(S + lambda I)u = -h
+ * with S + lambda I positive semi-definite, which singles out the global minimum (the
+ * trust-region argument): in S's eigenbasis (l1 <= l2, h -> a), with mu = lambda + l1 > 0
+ * and d = l2 - l1, |u|^2 = a1^2/(4 mu^2) + a2^2/(4 (mu + d)^2) decreases from its value at
+ * 0+ to 0, so |u| = 1 has one root, found by safeguarded Newton on 1/|u| - 1 (concave).
+ * When a1 = 0 and |u(0+)| <= 1 (the "hard case"), mu = 0 and u gets the missing length
+ * along the first eigenvector. Nothing if no finite solution comes out. */
+std::optional<Eigen::Vector2d> unitMinimizerBySecularEquation(const Reduced& r)
+{
+  const double p = r.S(0, 0), q = 0.5 * (r.S(0, 1) + r.S(1, 0)), s = r.S(1, 1);
+  const double half_diff = 0.5 * (p - s), rad = std::hypot(half_diff, q);
+  const double d = 2 * rad;  // l2 - l1
+  const double phi = 0.5 * std::atan2(q, half_diff);
+  const Eigen::Vector2d v2(std::cos(phi), std::sin(phi)), v1(-v2.y(), v2.x());
+  const double a1 = v1.dot(r.h), a2 = v2.dot(r.h);
+  const double norm_a = std::hypot(a1, a2);
+  Eigen::Vector2d w;  // u in the eigenbasis
+  const bool hard = a1 == 0 && (d > 0 ? a2 * a2 <= 4 * d * d : a2 == 0);
+  if (hard)
+  {
+    const double w2 = d > 0 ? -a2 / (2 * d) : 0.0;
+    w = {std::sqrt(std::max(0.0, 1 - w2 * w2)), w2};
+  }
+  else
+  {
+    auto norm2 = [&](double mu) {
+      return a1 * a1 / (4 * mu * mu) + a2 * a2 / (4 * (mu + d) * (mu + d));
+    };
+    double lo = 0, hi = 0.5 * norm_a;  // |u(hi)| <= 1 < |u(0+)|
+    double mu = std::max(0.5 * std::abs(a1), 0.5 * std::abs(a2) - d);  // |u(mu)| >= 1
+    if (!(mu > 0)) mu = 0.5 * hi;
+    for (int it = 0; it < 100; it++)
+    {
+      const double n2 = norm2(mu);
+      const double psi = 1 / std::sqrt(n2) - 1;
+      if (psi < 0) lo = mu;
+      else hi = mu;
+      const double dn2 = -a1 * a1 / (2 * mu * mu * mu) -
+                         a2 * a2 / (2 * (mu + d) * (mu + d) * (mu + d));
+      const double dpsi = -0.5 * dn2 / (n2 * std::sqrt(n2));
+      double next = mu - psi / dpsi;
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if (std::abs(next - mu) <= 1e-15 * mu || hi - lo <= 1e-15 * hi)
+      {
+        mu = next;
+        break;
+      }
+      mu = next;
+    }
+    w = {-a1 / (2 * mu), -a2 / (2 * (mu + d))};
+  }
+  const Eigen::Vector2d u = w.x() * v1 + w.y() * v2;
+  if (!u.allFinite() || std::abs(u.norm() - 1) > 1e-3) return std::nullopt;
+  return u.normalized();
+}
 
+/** The minimizer over the roots of the quartic of eq. (3) (slower: a 4x4 eigenvalue
+ * problem), used when the secular equation gives no usable answer. */
+std::optional<Eigen::Vector2d> unitMinimizerByQuartic(const Eigen::Matrix4d& M,
+                                                      const Eigen::Vector4d& g, const Reduced& r)
+{
   // Each real root lambda gives u = -(S + lambda I)^-1 h / 2 (stationary points on the circle).
   double best_f = std::numeric_limits<double>::infinity();
-  Eigen::Vector2d best_u(1, 0);
-  bool found = false;
+  std::optional<Eigen::Vector2d> best;
   for (double lambda : quarticRealRoots(quarticCoefficients(M, g)))
   {
     const Eigen::Matrix2d Q = r.S + lambda * Eigen::Matrix2d::Identity();
@@ -172,19 +228,40 @@ std::optional<Eigen::Vector3d> minimizeOnCircle(const Eigen::Matrix4d& M, const 
     if (f < best_f)
     {
       best_f = f;
-      best_u = u;
-      found = true;
+      best = u;
     }
   }
-  // Degenerate cost (h ~ 0, double roots, no usable root): search the angle directly.
-  if (!found)
+  return best;
+}
+
+std::optional<Eigen::Vector3d> minimize(const Eigen::Matrix4d& M, const Eigen::Vector4d& g,
+                                        bool by_quartic)
+{
+  if (!M.allFinite() || !g.allFinite()) return std::nullopt;
+  const Reduced r = reduce(M, g);
+  if (!r.Ainv.allFinite()) return std::nullopt;
+  auto u = by_quartic ? unitMinimizerByQuartic(M, g, r) : unitMinimizerBySecularEquation(r);
+  if (!u && !by_quartic) u = unitMinimizerByQuartic(M, g, r);
+  // Degenerate cost (double roots, no usable root): search the angle directly.
+  if (!u)
   {
     const double th = minimizeAngleBySearch(r);
-    best_u = Eigen::Vector2d(std::cos(th), std::sin(th));
+    u = Eigen::Vector2d(std::cos(th), std::sin(th));
   }
+  const Eigen::Vector2d t = bestTranslation(r, g, *u);
+  return Eigen::Vector3d(t.x(), t.y(), std::atan2(u->y(), u->x()));
+}
+}  // namespace
 
-  const Eigen::Vector2d t = bestTranslation(r, g, best_u);
-  return Eigen::Vector3d(t.x(), t.y(), std::atan2(best_u.y(), best_u.x()));
+std::optional<Eigen::Vector3d> minimizeOnCircle(const Eigen::Matrix4d& M, const Eigen::Vector4d& g)
+{
+  return minimize(M, g, false);
+}
+
+std::optional<Eigen::Vector3d> minimizeOnCircleByQuartic(const Eigen::Matrix4d& M,
+                                                         const Eigen::Vector4d& g)
+{
+  return minimize(M, g, true);
 }
 
 std::optional<Eigen::Vector3d> solvePointToLine(const std::vector<PointToLine>& terms,

@@ -117,10 +117,14 @@ ReferenceIndex::ReferenceIndex(const Scan& ref, double min_segment_length)
   }
   segment_lo.resize(n);
   segment_hi.resize(n);
+  normal_lo.assign(n, Eigen::Vector2d::Zero());
+  normal_hi.assign(n, Eigen::Vector2d::Zero());
   for (int j = 0; j < n; j++)
   {
     segment_lo[j] = segmentEnd(ref, circular, j, -1, min_segment);
     segment_hi[j] = segmentEnd(ref, circular, j, +1, min_segment);
+    if (segment_lo[j] >= 0) normal_lo[j] = segmentNormal(ref.points[j], ref.points[segment_lo[j]]);
+    if (segment_hi[j] >= 0) normal_hi[j] = segmentNormal(ref.points[j], ref.points[segment_hi[j]]);
   }
 }
 
@@ -183,7 +187,7 @@ std::vector<Correspondence> findCorrespondences(const Scan& ref, const Reference
     if (best_k == kNone) continue;
     const int j2 = closerEnd(ref, index.segment_lo[best_k], index.segment_hi[best_k], p);
     if (j2 < 0) continue;
-    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
+    out.push_back({static_cast<int>(i), best_k, j2, best_d2});
   }
   return out;
 }
@@ -212,7 +216,7 @@ std::vector<Correspondence> findCorrespondencesBruteForce(
     if (best_k < 0) continue;
     const int j2 = secondPoint(ref, index.circular, best_k, cur_in_ref[i], min_segment);
     if (j2 < 0) continue;
-    out.push_back({static_cast<int>(i), best_k, j2, std::sqrt(best_d2)});
+    out.push_back({static_cast<int>(i), best_k, j2, best_d2});
   }
   return out;
 }

@@ -12,8 +12,9 @@ namespace
 {
 Eigen::Matrix2d rot(double a)
 {
+  const double c = std::cos(a), s = std::sin(a);
   Eigen::Matrix2d R;
-  R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+  R << c, -s, s, c;
   return R;
 }
 
@@ -48,9 +49,12 @@ void normalProjectorDerivatives(const CovarianceTerm& t, Eigen::Matrix2d& dC_j1,
   dC_j2 = dn2 * n.transpose() + n * dn2.transpose();
 }
 
-TermDerivatives termDerivatives(const CovarianceTerm& t, const Eigen::Vector3d& x)
+namespace
 {
-  const Eigen::Matrix2d R = rot(x.z());
+/** termDerivatives() with R = rot(x.z()) given (computed once for all terms). */
+TermDerivatives derivativesWith(const CovarianceTerm& t, const Eigen::Vector3d& x,
+                                const Eigen::Matrix2d& R)
+{
   Eigen::Matrix2d R90;  // R(th + pi/2) = R90 R(th), R(th + pi) = -R(th)
   R90 << 0, -1, 1, 0;
   const Eigen::Vector2d p = t.rho_i * t.dir_i;
@@ -78,6 +82,12 @@ TermDerivatives termDerivatives(const CovarianceTerm& t, const Eigen::Vector3d& 
   out.d_rho_j2 << 2 * dC2 * v2, 2 * v2.dot(dC2 * v1);
   return out;
 }
+}  // namespace
+
+TermDerivatives termDerivatives(const CovarianceTerm& t, const Eigen::Vector3d& x)
+{
+  return derivativesWith(t, x, rot(x.z()));
+}
 
 Eigen::Matrix3d plicpCovariance(const std::vector<CovarianceTerm>& terms, const Eigen::Vector3d& x,
                                 double range_sigma, double unobservable_variance)
@@ -92,9 +102,10 @@ Eigen::Matrix3d plicpCovariance(const std::vector<CovarianceTerm>& terms, const 
   }
   std::vector<Eigen::Vector3d> cur_cols(max_cur + 1, Eigen::Vector3d::Zero()),
       ref_cols(max_ref + 1, Eigen::Vector3d::Zero());
+  const Eigen::Matrix2d R = rot(x.z());
   for (const auto& t : terms)
   {
-    const TermDerivatives d = termDerivatives(t, x);
+    const TermDerivatives d = derivativesWith(t, x, R);
     H += d.H;
     cur_cols[t.ray_i] += d.d_rho_i;
     ref_cols[t.ray_j1] += d.d_rho_j1;

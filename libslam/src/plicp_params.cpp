@@ -20,6 +20,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   retry_rotation_step = mrpt::DEG2RAD(
       c.read_double(s, "retry_rotation_step_DEG", mrpt::RAD2DEG(retry_rotation_step)));
   MRPT_LOAD_CONFIG_VAR_CS(retry_min_gain, double);
+  point_spacing = mrpt::DEG2RAD(c.read_double(s, "point_spacing_DEG", mrpt::RAD2DEG(point_spacing)));
   MRPT_LOAD_CONFIG_VAR_CS(min_segment_length, double);
   MRPT_LOAD_CONFIG_VAR_CS(remove_doubles, bool);
   MRPT_LOAD_CONFIG_VAR_CS(trim_keep_fraction, double);
@@ -45,6 +46,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   require(retry_rotation_step > 0, "retry_rotation_step_DEG must be > 0");
   require(retry_min_gain >= 1, "retry_min_gain must be >= 1");
   require(coarse_start_fraction >= 0 && coarse_start_fraction <= 1, "coarse_start_fraction must be in [0, 1]");
+  require(point_spacing >= 0, "point_spacing_DEG must be >= 0");
   require(min_segment_length >= 0, "min_segment_length must be >= 0");
   require(trim_keep_fraction > 0 && trim_keep_fraction <= 1, "trim_keep_fraction must be in (0, 1]");
   require(adaptive_quantile > 0 && adaptive_quantile <= 1, "adaptive_quantile must be in (0, 1]");
@@ -66,6 +68,7 @@ void PlicpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("retry_rotation_step_DEG", retry_rotation_step, "[deg] ...of this");
   MRPT_SAVE_CONFIG_VAR_COMMENT(retry_min_gain, "A retry wins only with this many times the first run's inliers");
   MRPT_SAVE_CONFIG_VAR_COMMENT(coarse_start_fraction, "Start coarse if the guess matches fewer than this fraction of points within max_correspondence_dist");
+  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("point_spacing_DEG", point_spacing, "[deg] iterate on every k-th current ray, k = round(this / beam spacing), then one step with all rays (0: all rays)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_segment_length, "[m] shortest reference segment j1-j2 that defines a normal");
   MRPT_SAVE_CONFIG_VAR_COMMENT(remove_doubles, "Keep only the nearest of several points matched to one reference point");
   MRPT_SAVE_CONFIG_VAR_COMMENT(trim_keep_fraction, "Keep at most this fraction of the best matches");

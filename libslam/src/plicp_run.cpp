@@ -8,34 +8,43 @@
 
 namespace swslam::plicp
 {
-std::vector<Eigen::Vector2d> transformed(const Scan& s, const Eigen::Vector3d& x)
+void transformInto(const Scan& s, const Eigen::Vector3d& x, std::vector<Eigen::Vector2d>& out)
 {
   const double c = std::cos(x.z()), sn = std::sin(x.z());
-  std::vector<Eigen::Vector2d> out(s.size());
+  out.resize(s.size());
   for (size_t i = 0; i < s.size(); i++)
   {
     const auto& p = s.points[i];
     out[i] = {c * p.x() - sn * p.y() + x.x(), sn * p.x() + c * p.y() + x.y()};
   }
-  return out;
 }
 
-namespace
+std::vector<Eigen::Vector2d> transformed(const Scan& s, const Eigen::Vector3d& x)
 {
-/** Unit normal of the reference segment j1-j2. */
-Eigen::Vector2d normalOf(const Scan& ref, const Correspondence& k)
-{
-  const Eigen::Vector2d e = (ref.points[k.j1] - ref.points[k.j2]).normalized();
-  return {-e.y(), e.x()};
+  std::vector<Eigen::Vector2d> out;
+  transformInto(s, x, out);
+  return out;
 }
-}  // namespace
 
 std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref,
                                const std::vector<Correspondence>& cs)
 {
   std::vector<double> e(cs.size());
   for (size_t k = 0; k < cs.size(); k++)
-    e[k] = std::abs(normalOf(ref, cs[k]).dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
+    e[k] = std::abs(segmentNormal(ref.points[cs[k].j1], ref.points[cs[k].j2])
+                        .dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
+  return e;
+}
+
+std::vector<double> lineErrors(const ReferenceScan& reference,
+                               const std::vector<Eigen::Vector2d>& cur_in_ref,
+                               const std::vector<Correspondence>& cs)
+{
+  const Scan& ref = reference.scan;
+  std::vector<double> e(cs.size());
+  for (size_t k = 0; k < cs.size(); k++)
+    e[k] = std::abs(correspondenceNormal(ref, reference.index, cs[k])
+                        .dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
   return e;
 }
 
@@ -44,14 +53,14 @@ namespace
 /** Outlier rejection of the correspondences found within `radius` (doubles only at the final
  * radius: while the scans are still far apart many points share a nearest neighbour, and
  * thinning them then shrinks the basin of convergence). */
-std::vector<Correspondence> rejectOutliers(const Scan& ref,
+std::vector<Correspondence> rejectOutliers(const ReferenceScan& reference,
                                            const std::vector<Eigen::Vector2d>& cur_in_ref,
                                            std::vector<Correspondence> found, double radius,
                                            const PlicpParams& params)
 {
   if (params.remove_doubles && radius <= params.max_correspondence_dist)
-    found = keepNearestPerReference(found, static_cast<int>(ref.size()));
-  return trimByError(found, lineErrors(ref, cur_in_ref, found), params.trim_keep_fraction,
+    found = keepNearestPerReference(found, static_cast<int>(reference.scan.size()));
+  return trimByError(found, lineErrors(reference, cur_in_ref, found), params.trim_keep_fraction,
                             params.adaptive_quantile, params.adaptive_mult);
 }
 
@@ -75,6 +84,8 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
   const Scan& ref = reference.scan;
   const size_t min_n = static_cast<size_t>(params.min_correspondences);
   std::vector<Correspondence> previous, before_previous;
+  std::vector<Eigen::Vector2d> cur_in_ref;  // buffers reused over the iterations
+  std::vector<PointToLine> terms;
   auto settled = [&]() {
     if (radius <= params.max_correspondence_dist) return true;
     radius = std::max(params.max_correspondence_dist, 0.5 * radius);
@@ -85,11 +96,11 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
   while (run.iterations < params.max_iterations)
   {
     run.iterations++;
-    const auto cur_in_ref = transformed(cur, run.x);
+    transformInto(cur, run.x, cur_in_ref);
     auto found = run.iterations == 1 && !first.empty()
                      ? std::move(first)
                      : findCorrespondences(ref, reference.index, cur_in_ref, radius);
-    run.kept = rejectOutliers(ref, cur_in_ref, std::move(found), radius, params);
+    run.kept = rejectOutliers(reference, cur_in_ref, std::move(found), radius, params);
     if (run.kept.size() < min_n)
     {
       run.status = MatchStatus::TooFewCorrespondences;
@@ -103,10 +114,9 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
       run.status = MatchStatus::Converged;
       return;
     }
-    std::vector<PointToLine> terms;
-    terms.reserve(run.kept.size());
+    terms.clear();
     for (const auto& k : run.kept)
-      terms.push_back({cur.points[k.i], ref.points[k.j1], normalOf(ref, k)});
+      terms.push_back({cur.points[k.i], ref.points[k.j1], correspondenceNormal(ref, reference.index, k)});
     const auto next = solvePointToLine(terms, run.x);
     if (!next || !next->allFinite())
     {
@@ -117,8 +127,8 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
     const Eigen::Vector3d step(next->x() - run.x.x(), next->y() - run.x.y(),
                                std::remainder(next->z() - run.x.z(), 2 * M_PI));
     run.x = *next;
-    before_previous = std::move(previous);
-    previous = run.kept;
+    std::swap(before_previous, previous);
+    previous = run.kept;  // reuses before_previous's old storage
     if (isSmallStep(step, radius, params) && settled())
     {
       run.status = MatchStatus::Converged;
@@ -164,7 +174,7 @@ size_t inlierCount(const ReferenceScan& reference, const Scan& cur, const IcpRun
     return 0;
   const auto pts = transformed(cur, run.x);
   const auto errors =
-      lineErrors(reference.scan, pts,
+      lineErrors(reference, pts,
                  kept_only ? run.kept
                            : findCorrespondences(reference.scan, reference.index, pts,
                                                  params.max_correspondence_dist));
@@ -177,6 +187,27 @@ size_t inlierCount(const ReferenceScan& reference, const Scan& cur, const IcpRun
  * inliers of the first run (a low-overlap pair must not be "improved" into a wrong pose). */
 }  // namespace
 
+bool fullResolutionStep(const ReferenceScan& reference, const Scan& cur,
+                        const PlicpParams& params, IcpRun& run)
+{
+  const Scan& ref = reference.scan;
+  const auto cur_in_ref = transformed(cur, run.x);
+  auto kept = rejectOutliers(reference, cur_in_ref,
+                             findCorrespondences(ref, reference.index, cur_in_ref,
+                                                 params.max_correspondence_dist),
+                             params.max_correspondence_dist, params);
+  if (kept.size() < static_cast<size_t>(params.min_correspondences)) return false;
+  std::vector<PointToLine> terms;
+  terms.reserve(kept.size());
+  for (const auto& k : kept) terms.push_back({cur.points[k.i], ref.points[k.j1], correspondenceNormal(ref, reference.index, k)});
+  const auto next = solvePointToLine(terms, run.x);
+  if (!next || !next->allFinite()) return false;
+  run.x = *next;
+  run.kept = std::move(kept);
+  run.iterations++;
+  return true;
+}
+
 IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x0,
                       const PlicpParams& params)
 {
@@ -184,6 +215,7 @@ IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eig
   // The run's own final set counts no more inliers than a fresh search, so enough of them
   // settles it without one (the common case, kept off the per-scan hot path).
   const double enough = params.retry_below_inlier_fraction * cur.size();
+  if (enough <= 0) return run;  // retries off: no inlier count needed
   if (inlierCount(reference, cur, run, params, /*kept_only=*/true) >= enough) return run;
   const size_t first = inlierCount(reference, cur, run, params);
   if (first >= enough) return run;

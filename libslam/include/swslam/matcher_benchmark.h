@@ -3,6 +3,7 @@
 // against MRPT's CICP (classic and Levenberg-Marquardt), each from identity and from the
 // reference relative pose. Used by apps/swslam-bench-matcher.
 
+#include <swslam/correlative/correlative_params.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/tum_io.h>
 
@@ -36,10 +37,15 @@ struct MatcherRow
   double trans_median_m = 0, trans_rmse_m = 0, rot_rmse_deg = 0, frac_under_5cm = 0;
 };
 
-/** Runs every method and initial guess on pairs (k, k + stride). Errors are measured on
- * the vehicle's relative pose. */
+/** Runs every method (or only the one named `only`, if not empty) from each initial guess on
+ * pairs (k, k + stride): `plicp`, `plicp+search` (PLICP, and when its guess looks poor the
+ * correlative search of tracking with `search_params`, then PLICP from the search's pose),
+ * `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose. Throws
+ * std::invalid_argument for an unknown method name. */
 std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t stride,
-                                          const PlicpParams& plicp_params);
+                                          const PlicpParams& plicp_params,
+                                          const std::string& only = "",
+                                          const CorrelativeParams& search_params = {});
 
 /** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
 std::string formatRow(const MatcherRow& row);

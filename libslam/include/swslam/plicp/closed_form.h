@@ -41,11 +41,19 @@ double lagrangeConstraintResidual(const Eigen::Matrix4d& M, const Eigen::Vector4
 /** Real roots of a quartic [a..e] (a != 0), each polished by Newton steps. */
 std::vector<double> quarticRealRoots(const std::array<double, 5>& coeffs);
 
-/** Minimizes x'Mx + g'x with cos^2 + sin^2 = 1 exactly. Every real root of the quartic is
- * tried and the one of least cost kept; if none is usable (degenerate cost), a dense search
- * over the angle followed by Newton refinement is used. Returns [tx, ty, theta], or nothing
- * if M is not finite. `M` must have an invertible translation block A. */
+/** Minimizes x'Mx + g'x with cos^2 + sin^2 = 1 exactly. The global minimum is the one root
+ * of the Lagrange condition with S + lambda I positive semi-definite: it is found by Newton
+ * on the 2x2 secular equation (no quartic to solve). If that gives nothing usable, every
+ * real root of the quartic is tried (minimizeOnCircleByQuartic()), and if none is usable
+ * (degenerate cost) a dense search over the angle with Newton refinement. Returns
+ * [tx, ty, theta], or nothing if M is not finite. `M` must have an invertible block A. */
 std::optional<Eigen::Vector3d> minimizeOnCircle(const Eigen::Matrix4d& M, const Eigen::Vector4d& g);
+
+/** The same minimum from the roots of the quartic of eq. (3), each tried and the one of
+ * least cost kept (then the angle search if none is usable). Slower; kept as the paper's
+ * method and to check minimizeOnCircle() against. */
+std::optional<Eigen::Vector3d> minimizeOnCircleByQuartic(const Eigen::Matrix4d& M,
+                                                         const Eigen::Vector4d& g);
 
 /** Solves eq. (1) for the terms. A tiny Tikhonov pull towards `anchor` ([tx, ty, th], the
  * current estimate) keeps directions the scene does not constrain (a corridor's axis)

@@ -16,7 +16,7 @@ struct Correspondence
   int i = -1;   ///< current point
   int j1 = -1;  ///< nearest reference point
   int j2 = -1;  ///< neighbour of j1 along the scan (see secondPoint())
-  double dist = 0;  ///< point-to-point distance from the transformed current point to j1
+  double dist2 = 0;  ///< squared point-to-point distance from the transformed current point to j1
   bool operator==(const Correspondence& o) const { return i == o.i && j1 == o.j1 && j2 == o.j2; }
 };
 
@@ -28,11 +28,30 @@ struct ReferenceIndex
   std::vector<Eigen::Vector2d> dirs;  ///< unit direction of each ray
   std::vector<double> pseudo;         ///< pseudoAngle() of each ray, non-decreasing
   std::vector<int> segment_lo, segment_hi;  ///< segmentEnd() on each side of each ray
+  /// Unit normal of the segment from each ray to segment_lo / segment_hi (see segmentNormal()).
+  std::vector<Eigen::Vector2d> normal_lo, normal_hi;
   bool circular = false;  ///< the scan closes on itself (aperture ~ 360 deg)
   double min_segment = 0;  ///< [m] see secondPoint()
 
   ReferenceIndex(const Scan& ref, double min_segment_length);
 };
+
+/** Unit normal of the reference segment j1-j2: (q1 - q2) normalized, turned by +90 deg. */
+inline Eigen::Vector2d segmentNormal(const Eigen::Vector2d& q1, const Eigen::Vector2d& q2)
+{
+  const Eigen::Vector2d e = (q1 - q2).normalized();
+  return {-e.y(), e.x()};
+}
+
+/** segmentNormal() of a correspondence's j1-j2, from the index's tables when j2 is one of
+ * j1's segment ends (always, for findCorrespondences()), computed otherwise. */
+inline Eigen::Vector2d correspondenceNormal(const Scan& ref, const ReferenceIndex& index,
+                                            const Correspondence& k)
+{
+  if (k.j2 == index.segment_lo[k.j1]) return index.normal_lo[k.j1];
+  if (k.j2 == index.segment_hi[k.j1]) return index.normal_hi[k.j1];
+  return segmentNormal(ref.points[k.j1], ref.points[k.j2]);
+}
 
 /** A cheap monotone stand-in for atan2(y, x): in [-2, 2), 2 per half turn. */
 double pseudoAngle(double x, double y);

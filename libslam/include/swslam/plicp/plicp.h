@@ -26,6 +26,7 @@ struct PlicpParams : public mrpt::config::CLoadableOptions
   int retry_rotations = 3;                ///< retries: the guess turned by +-1..k steps...
   double retry_rotation_step = 20.0 * M_PI / 180;  ///< [rad] ...of this (ini: retry_rotation_step_DEG)
   double retry_min_gain = 3.0;            ///< a retry wins only with this many times the inliers
+  double point_spacing = 0.0;  ///< [rad] iterate on current rays about this far apart, then one full step (ini: point_spacing_DEG; 0: every ray)
   double min_segment_length = 0.2;   ///< [m] shortest j1-j2 segment defining a normal
   bool remove_doubles = true;        ///< keep one match per reference point (at the final radius)
   double trim_keep_fraction = 0.95;  ///< keep at most this fraction of the best matches

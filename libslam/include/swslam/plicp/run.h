@@ -22,9 +22,15 @@ struct IcpRun
 
 /** The current scan's points moved by x = [x, y, phi]. */
 std::vector<Eigen::Vector2d> transformed(const Scan& s, const Eigen::Vector3d& x);
+/** The same into `out` (resized; reuses its storage). */
+void transformInto(const Scan& s, const Eigen::Vector3d& x, std::vector<Eigen::Vector2d>& out);
 
 /** Point-to-line distance of each correspondence (eq. 1's residual). */
 std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2d>& cur_in_ref,
+                               const std::vector<Correspondence>& cs);
+/** The same with the normals from the reference's index tables (same values, faster). */
+std::vector<double> lineErrors(const ReferenceScan& reference,
+                               const std::vector<Eigen::Vector2d>& cur_in_ref,
                                const std::vector<Correspondence>& cs);
 
 /** PLICP from the guess x0 (coarse start if the guess is poor); if it ends with few inliers,
@@ -32,5 +38,12 @@ std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2
  * retry_min_gain times the inliers of the first run. Iterations are summed over runs. */
 IcpRun runWithRetries(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x0,
                       const PlicpParams& params);
+
+/** One more iteration with every ray of `cur` (the run having converged on a decimated
+ * copy): correspondences at max_correspondence_dist, outlier rejection, closed-form step.
+ * On success run.x and run.kept (then indices into `cur`) are updated and it returns true;
+ * with too few correspondences or a failed solve it returns false and leaves `run` as is. */
+bool fullResolutionStep(const ReferenceScan& reference, const Scan& cur,
+                        const PlicpParams& params, IcpRun& run);
 
 }  // namespace swslam::plicp
