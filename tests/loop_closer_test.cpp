@@ -260,4 +260,9 @@ TEST(LoopClosureParams, LoadsSavesAndRejectsBadValuesAndKeys)
   mrpt::config::CConfigFileMemory bad;
   bad.write("loop_closure", "chi2_gate", -1.0);
   EXPECT_THROW(loadStrict<LoopClosureParams>(bad, "loop_closure"), std::invalid_argument);
+  mrpt::config::CConfigFileMemory window;
+  window.write("loop_closure", "consistency_window", 4);
+  EXPECT_EQ(loadStrict<LoopClosureParams>(window, "loop_closure").consistency_window, 4);
+  window.write("loop_closure", "consistency_window", -1);
+  EXPECT_THROW(loadStrict<LoopClosureParams>(window, "loop_closure"), std::invalid_argument);
 }

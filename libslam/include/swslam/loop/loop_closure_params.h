@@ -24,6 +24,12 @@ struct LoopClosureParams : public mrpt::config::CLoadableOptions
   double min_drift_sigma_xy = 0.1;               ///< [m] floor of the position std
   double min_drift_sigma_theta = 1.0 * M_PI / 180;  ///< [rad] (ini: min_drift_sigma_theta_DEG)
 
+  // Corroboration: a verified loop becomes an edge only once another verified loop, its new
+  // node and its old node each within this many ids of this loop's, agrees with it through
+  // the graph (loopPairChi2 <= chi2_gate, local error from the drift model over the two
+  // stretches). 0: a verified loop is an edge at once.
+  int consistency_window = 10;
+
   /** Throws std::invalid_argument naming the first out-of-range parameter. */
   void check() const;
 
