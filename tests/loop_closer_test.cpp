@@ -134,6 +134,29 @@ TEST(VerifyLoop, TheGateRejectsADriftTheTravelCannotExplain)
             Verdict::Accepted);
 }
 
+TEST(VerifyLoop, AGuessTooFarForPlicpIsFoundByTheCorrelativeSearch)
+{
+  // 2.7 m and 50 deg off after 150 m of travel (drift std 4.5 m, 45 deg): PLICP from the
+  // graph's guess does not get there; the search around it (3 std, capped by the window) does.
+  const Revisit r(CPose2D(2.2, -1.6, 50 * kDeg), 150.0, 14);
+  const LoopCheck plain = verifyLoop(r.graph, r.old_node, r.new_node, LoopClosureParams(), PlicpParams());
+  EXPECT_NE(plain.verdict, Verdict::Accepted) << toString(plain.verdict);
+  EXPECT_FALSE(plain.searched);
+  const LoopCheck c = verifyLoop(r.graph, r.old_node, r.new_node, LoopClosureParams(), PlicpParams(),
+                                 CorrelativeParams());
+  ASSERT_EQ(c.verdict, Verdict::Accepted) << toString(c.verdict) << " " << c.match.message;
+  EXPECT_TRUE(c.searched);
+  EXPECT_NEAR(c.edge->z.x(), r.truth().x(), 0.03);
+  EXPECT_NEAR(c.edge->z.y(), r.truth().y(), 0.03);
+  EXPECT_NEAR(c.edge->z.phi(), r.truth().phi(), 0.01);
+
+  // A disabled search is no search.
+  CorrelativeParams off;
+  off.enabled = false;
+  EXPECT_EQ(verifyLoop(r.graph, r.old_node, r.new_node, LoopClosureParams(), PlicpParams(), off).verdict,
+            plain.verdict);
+}
+
 TEST(VerifyLoop, AWrongPlaceIsNotAccepted)
 {
   // The graph believes node 40 is next to node 0, but its scan was taken 15 m away. (With

@@ -17,10 +17,11 @@ namespace swslam
 using mrpt::poses::CPose2D;
 
 GraphModule::GraphModule(const GraphOptimizerParams& graph, const LoopClosureParams& loops,
-                         const PlicpParams& plicp)
+                         const PlicpParams& plicp, const std::optional<CorrelativeParams>& search)
     : graph_params_(graph),
       loop_params_(loops),
       plicp_params_(plicp),
+      search_params_(search),
       schedule_(graph.full_optimization_interval)
 {
 }
@@ -81,7 +82,8 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
   if (!loop_params_.enabled) return 0;
   size_t accepted = 0;
   const auto checks = checkLoops(
-      graph_, nodes_.at(id), [this](size_t n) { return nodes_.at(n); }, loop_params_, plicp_params_);
+      graph_, nodes_.at(id), [this](size_t n) { return nodes_.at(n); }, loop_params_, plicp_params_,
+      search_params_);
   std::vector<TrackerEdge> verified;
   for (const LoopCheck& check : checks)
   {

@@ -38,8 +38,10 @@ struct GraphStep
 class GraphModule
 {
  public:
+  /** `search`: the correlative search of loop checks whose match from the graph's guess
+   * failed (verifyLoop); none when not given. */
   GraphModule(const GraphOptimizerParams& graph, const LoopClosureParams& loops,
-              const PlicpParams& plicp);
+              const PlicpParams& plicp, const std::optional<CorrelativeParams>& search = std::nullopt);
 
   /** Adds the node (its pose re-based on the graph's estimate of the previous node), its
    * edges and any verified loop, then optimizes the window, or everything after a loop
@@ -69,6 +71,7 @@ class GraphModule
   const GraphOptimizerParams graph_params_;
   const LoopClosureParams loop_params_;
   const PlicpParams plicp_params_;
+  const std::optional<CorrelativeParams> search_params_;
   std::vector<LoopNode> nodes_;  ///< by node id; only the owning thread
   mutable std::mutex mutex_;
   PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
