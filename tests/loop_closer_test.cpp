@@ -157,6 +157,40 @@ TEST(VerifyLoop, AGuessTooFarForPlicpIsFoundByTheCorrelativeSearch)
             plain.verdict);
 }
 
+TEST(VerifyLoop, AnAmbiguousSearchInAPeriodicCorridorGivesNoLoop)
+{
+  // A corridor with a pillar pair every metre, seen all round to 20 m: a shift by a metre looks
+  // the same but for the ends of the view (and the motion prior's cost). The graph's guess is
+  // 1.2 m and 40 deg off, so PLICP alone fails and the search decides.
+  test::World world;
+  world.segments = {{-40, -1.5, 40, -1.5}, {-40, 1.5, 40, 1.5}};
+  for (int k = -40; k <= 40; k++)
+  {
+    world.circles.push_back({1.0 * k, -1.0, 0.15});
+    world.circles.push_back({1.0 * k, 1.0, 0.15});
+  }
+  std::mt19937 rng(15);
+  auto node = [&](size_t id, const CPose2D& pose, double path) {
+    auto obs = test::simulateObservation(world, pose, 720, 2 * M_PI - 0.01, 20, 0.01, rng);
+    return LoopNode{id, std::make_shared<const ReferenceScan>(scanFromObservation(obs)), path};
+  };
+  const CPose2D a(0, 0, 0), b(0.5, 0.1, 0.2);
+  PoseGraph graph;
+  graph.addNode(0, a);
+  graph.addNode(40, b + CPose2D(1.2, 0.3, 40 * kDeg));
+  const LoopNode old_node = node(0, a, 0), new_node = node(40, b, 150);
+  LoopClosureParams p;
+  p.ambiguity_margin = 0.1;
+  const LoopCheck c = verifyLoop(graph, old_node, new_node, p, PlicpParams(), CorrelativeParams());
+  EXPECT_NE(c.verdict, Verdict::Accepted) << toString(c.verdict);
+  EXPECT_FALSE(c.searched);
+  // Without the ambiguity check the search does pick one of the look-alike poses.
+  LoopClosureParams no_check = p;
+  no_check.ambiguity_radius = 0;
+  const LoopCheck d = verifyLoop(graph, old_node, new_node, no_check, PlicpParams(), CorrelativeParams());
+  EXPECT_TRUE(d.searched);
+}
+
 TEST(VerifyLoop, AWrongPlaceIsNotAccepted)
 {
   // The graph believes node 40 is next to node 0, but its scan was taken 15 m away. (With
@@ -286,6 +320,8 @@ TEST(LoopClosureParams, LoadsSavesAndRejectsBadValuesAndKeys)
   mrpt::config::CConfigFileMemory window;
   window.write("loop_closure", "consistency_window", 4);
   EXPECT_EQ(loadStrict<LoopClosureParams>(window, "loop_closure").consistency_window, 4);
+  window.write("loop_closure", "ambiguity_radius", 1.5);
+  EXPECT_EQ(loadStrict<LoopClosureParams>(window, "loop_closure").ambiguity_radius, 1.5);
   window.write("loop_closure", "consistency_window", -1);
   EXPECT_THROW(loadStrict<LoopClosureParams>(window, "loop_closure"), std::invalid_argument);
 }

@@ -91,10 +91,12 @@ double inlierFraction(const MatchResult& m)
 }
 
 /** PLICP from the best pose of a correlative search on the old scan alone, around `guess`
- * (sensor frame) within 3 drift standard deviations. */
+ * (sensor frame) within 3 drift standard deviations; `first` when the search finds nothing or
+ * is ambiguous (a pose farther than ambiguity_radius from the best scores within
+ * ambiguity_margin of it: a self-similar place, where a loop is better missed). */
 MatchResult searchedLoopMatch(const ReferenceScan& old_scan, const Scan& cur, const CPose2D& guess,
                               const MatchResult& first, const Eigen::Matrix3d& drift,
-                              CorrelativeParams s, const PlicpParams& plicp)
+                              CorrelativeParams s, const LoopClosureParams& p, const PlicpParams& plicp)
 {
   s.window_xy = std::min(s.window_xy, 3 * std::sqrt(drift(0, 0)));
   s.window_theta = std::min(s.window_theta, 3 * std::sqrt(drift(2, 2)));
@@ -103,7 +105,24 @@ MatchResult searchedLoopMatch(const ReferenceScan& old_scan, const Scan& cur, co
   for (const auto& q : old_scan.scan.points)
     if (q.norm() <= s.max_range) rays.push_back({Eigen::Vector2d::Zero(), q});
   const correlative::ScorePyramid pyramid = searchPyramid(rays, s);
-  return searchAndMatch(old_scan, pyramid, cur, guess, first, s, plicp).match;
+  const auto points = correlative::thinPoints(cur.points, s.resolution, s.max_range);
+  correlative::SearchWindow w;
+  w.centre = Eigen::Vector3d(guess.x(), guess.y(), guess.phi());
+  w.half_xy = s.window_xy;
+  w.half_theta = s.window_theta;
+  w.theta_step = s.theta_step;
+  w.cost_per_m = s.cost_per_m;
+  w.cost_per_rad = s.cost_per_rad;
+  const auto best = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);
+  if (!best) return first;
+  if (p.ambiguity_radius > 0)
+  {
+    w.exclude_xy = best->pose.head<2>();
+    w.exclude_radius = p.ambiguity_radius;
+    const auto runner_up = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);
+    if (runner_up && runner_up->objective > best->objective - p.ambiguity_margin) return first;
+  }
+  return matchScans(old_scan, cur, CPose2D(best->pose.x(), best->pose.y(), best->pose.z()), plicp);
 }
 }  // namespace
 
@@ -133,7 +152,7 @@ LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode
   if (search && search->enabled && old.scan->scan.sensor_pose == newest.scan->scan.sensor_pose &&
       (c.match.status != MatchStatus::Converged || inlierFraction(c.match) < p.min_inlier_fraction))
   {
-    const MatchResult m = searchedLoopMatch(*old.scan, newest.scan->scan, guess, c.match, drift, *search, plicp);
+    const MatchResult m = searchedLoopMatch(*old.scan, newest.scan->scan, guess, c.match, drift, *search, p, plicp);
     c.searched = m.status != c.match.status || !(m.pose == c.match.pose);
     c.match = m;
   }
