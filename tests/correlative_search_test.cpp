@@ -114,6 +114,20 @@ TEST(CorrelativeSearch, BranchAndBoundEqualsBruteForce)
       EXPECT_NEAR(cells.x(), std::round(cells.x()), 1e-9);
       EXPECT_LE(std::abs(cells.x()), w.half_xy / res + 1e-9);
       EXPECT_NEAR(scoreAt(pyr.levels[0], cur, fast->pose), fast->score, 0.02);
+
+      // The best pose elsewhere (a disc around the best excluded): same in both, outside the
+      // disc, and no better than the best.
+      SearchWindow elsewhere = w;
+      elsewhere.exclude_xy = fast->pose.head<2>();
+      elsewhere.exclude_radius = 0.35;
+      const auto fast2 = searchBranchAndBound(pyr, cur, elsewhere, min_score);
+      const auto slow2 = searchBruteForce(pyr.levels[0], cur, elsewhere, min_score);
+      ASSERT_EQ(fast2.has_value(), slow2.has_value()) << "trial " << trial << " min " << min_score;
+      if (!slow2) continue;
+      EXPECT_EQ(fast2->objective, slow2->objective) << "trial " << trial;
+      EXPECT_GT((fast2->pose.head<2>() - fast->pose.head<2>()).norm(), 0.35);
+      EXPECT_FALSE(excluded(elsewhere, fast2->pose.head<2>()));
+      EXPECT_LE(fast2->objective, fast->objective);
     }
   }
 }

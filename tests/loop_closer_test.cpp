@@ -134,6 +134,63 @@ TEST(VerifyLoop, TheGateRejectsADriftTheTravelCannotExplain)
             Verdict::Accepted);
 }
 
+TEST(VerifyLoop, AGuessTooFarForPlicpIsFoundByTheCorrelativeSearch)
+{
+  // 2.7 m and 50 deg off after 150 m of travel (drift std 4.5 m, 45 deg): PLICP from the
+  // graph's guess does not get there; the search around it (3 std, capped by the window) does.
+  const Revisit r(CPose2D(2.2, -1.6, 50 * kDeg), 150.0, 14);
+  const LoopCheck plain = verifyLoop(r.graph, r.old_node, r.new_node, LoopClosureParams(), PlicpParams());
+  EXPECT_NE(plain.verdict, Verdict::Accepted) << toString(plain.verdict);
+  EXPECT_FALSE(plain.searched);
+  const LoopCheck c = verifyLoop(r.graph, r.old_node, r.new_node, LoopClosureParams(), PlicpParams(),
+                                 CorrelativeParams());
+  ASSERT_EQ(c.verdict, Verdict::Accepted) << toString(c.verdict) << " " << c.match.message;
+  EXPECT_TRUE(c.searched);
+  EXPECT_NEAR(c.edge->z.x(), r.truth().x(), 0.03);
+  EXPECT_NEAR(c.edge->z.y(), r.truth().y(), 0.03);
+  EXPECT_NEAR(c.edge->z.phi(), r.truth().phi(), 0.01);
+
+  // A disabled search is no search.
+  CorrelativeParams off;
+  off.enabled = false;
+  EXPECT_EQ(verifyLoop(r.graph, r.old_node, r.new_node, LoopClosureParams(), PlicpParams(), off).verdict,
+            plain.verdict);
+}
+
+TEST(VerifyLoop, AnAmbiguousSearchInAPeriodicCorridorGivesNoLoop)
+{
+  // A corridor with a pillar pair every metre, seen all round to 20 m: a shift by a metre looks
+  // the same but for the ends of the view (and the motion prior's cost). The graph's guess is
+  // 1.2 m and 40 deg off, so PLICP alone fails and the search decides.
+  test::World world;
+  world.segments = {{-40, -1.5, 40, -1.5}, {-40, 1.5, 40, 1.5}};
+  for (int k = -40; k <= 40; k++)
+  {
+    world.circles.push_back({1.0 * k, -1.0, 0.15});
+    world.circles.push_back({1.0 * k, 1.0, 0.15});
+  }
+  std::mt19937 rng(15);
+  auto node = [&](size_t id, const CPose2D& pose, double path) {
+    auto obs = test::simulateObservation(world, pose, 720, 2 * M_PI - 0.01, 20, 0.01, rng);
+    return LoopNode{id, std::make_shared<const ReferenceScan>(scanFromObservation(obs)), path};
+  };
+  const CPose2D a(0, 0, 0), b(0.5, 0.1, 0.2);
+  PoseGraph graph;
+  graph.addNode(0, a);
+  graph.addNode(40, b + CPose2D(1.2, 0.3, 40 * kDeg));
+  const LoopNode old_node = node(0, a, 0), new_node = node(40, b, 150);
+  LoopClosureParams p;
+  p.ambiguity_margin = 0.1;
+  const LoopCheck c = verifyLoop(graph, old_node, new_node, p, PlicpParams(), CorrelativeParams());
+  EXPECT_NE(c.verdict, Verdict::Accepted) << toString(c.verdict);
+  EXPECT_FALSE(c.searched);
+  // Without the ambiguity check the search does pick one of the look-alike poses.
+  LoopClosureParams no_check = p;
+  no_check.ambiguity_radius = 0;
+  const LoopCheck d = verifyLoop(graph, old_node, new_node, no_check, PlicpParams(), CorrelativeParams());
+  EXPECT_TRUE(d.searched);
+}
+
 TEST(VerifyLoop, AWrongPlaceIsNotAccepted)
 {
   // The graph believes node 40 is next to node 0, but its scan was taken 15 m away. (With
@@ -260,4 +317,11 @@ TEST(LoopClosureParams, LoadsSavesAndRejectsBadValuesAndKeys)
   mrpt::config::CConfigFileMemory bad;
   bad.write("loop_closure", "chi2_gate", -1.0);
   EXPECT_THROW(loadStrict<LoopClosureParams>(bad, "loop_closure"), std::invalid_argument);
+  mrpt::config::CConfigFileMemory window;
+  window.write("loop_closure", "consistency_window", 4);
+  EXPECT_EQ(loadStrict<LoopClosureParams>(window, "loop_closure").consistency_window, 4);
+  window.write("loop_closure", "ambiguity_radius", 1.5);
+  EXPECT_EQ(loadStrict<LoopClosureParams>(window, "loop_closure").ambiguity_radius, 1.5);
+  window.write("loop_closure", "consistency_window", -1);
+  EXPECT_THROW(loadStrict<LoopClosureParams>(window, "loop_closure"), std::invalid_argument);
 }

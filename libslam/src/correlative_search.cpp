@@ -49,6 +49,10 @@ class Lattice
     for (double a : angles_) cells_.push_back(rotatedCells(base, points, a, w.centre.head<2>()));
   }
   int n() const { return n_; }
+  bool excluded(int i, int j) const
+  {
+    return correlative::excluded(w_, w_.centre.head<2>() + res_ * Eigen::Vector2d(i, j));
+  }
   int angleCount() const { return static_cast<int>(angles_.size()); }
   int32_t sum(const ScoreGrid& level, int k, int i, int j) const { return sumAt(level, cells_[k], i, j); }
   /** The objective with cell sum `sum` at the best pose of the block of offsets [i0, i1] x
@@ -114,6 +118,7 @@ class BranchAndBound
       if (c.sum < needed_) continue;  // no pose of the block reaches min_score
       if (h == 0)
       {
+        if (lattice_.excluded(c.i, c.j)) continue;
         best_ = c;
         continue;
       }
@@ -140,6 +145,11 @@ double objective(const SearchWindow& w, double score, const Eigen::Vector3d& pos
 {
   return score - w.cost_per_m * (pose.head<2>() - w.centre.head<2>()).norm() -
          w.cost_per_rad * std::abs(std::remainder(pose.z() - w.centre.z(), 2 * M_PI));
+}
+
+bool excluded(const SearchWindow& w, const Eigen::Vector2d& t)
+{
+  return w.exclude_radius >= 0 && (t - w.exclude_xy).norm() <= w.exclude_radius;
 }
 
 std::vector<double> windowAngles(const SearchWindow& w)
@@ -200,7 +210,7 @@ std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,
       {
         evaluated++;
         const int32_t sum = lattice.sum(grid, k, i, j);
-        if (sum < needed) continue;
+        if (sum < needed || lattice.excluded(i, j)) continue;
         const SearchResult r = lattice.result(k, i, j, sum, 0);
         if (!best || r.objective > best->objective) best = r;
       }

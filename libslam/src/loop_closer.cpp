@@ -1,5 +1,7 @@
 #include "swslam/loop/loop_closer.h"
 
+#include "swslam/correlative/search.h"
+#include "swslam/tracking/searched_match.h"
 #include "swslam/tracking/sensor_frame.h"
 
 #include <mrpt/math/wrap2pi.h>
@@ -81,8 +83,52 @@ double loopMahalanobis2(const CPose2D& predicted, const CPose2D& measured,
   return e.dot(llt.solve(e));
 }
 
+namespace
+{
+double inlierFraction(const MatchResult& m)
+{
+  return m.cur_valid_rays == 0 ? 0.0 : static_cast<double>(m.correspondences) / m.cur_valid_rays;
+}
+
+/** PLICP from the best pose of a correlative search on the old scan alone, around `guess`
+ * (sensor frame) within 3 drift standard deviations; `first` when the search finds nothing or
+ * is ambiguous (a pose farther than ambiguity_radius from the best scores within
+ * ambiguity_margin of it: a self-similar place, where a loop is better missed). */
+MatchResult searchedLoopMatch(const ReferenceScan& old_scan, const Scan& cur, const CPose2D& guess,
+                              const MatchResult& first, const Eigen::Matrix3d& drift,
+                              CorrelativeParams s, const LoopClosureParams& p, const PlicpParams& plicp)
+{
+  s.window_xy = std::min(s.window_xy, 3 * std::sqrt(drift(0, 0)));
+  s.window_theta = std::min(s.window_theta, 3 * std::sqrt(drift(2, 2)));
+  std::vector<correlative::Ray> rays;
+  rays.reserve(old_scan.scan.points.size());
+  for (const auto& q : old_scan.scan.points)
+    if (q.norm() <= s.max_range) rays.push_back({Eigen::Vector2d::Zero(), q});
+  const correlative::ScorePyramid pyramid = searchPyramid(rays, s);
+  const auto points = correlative::thinPoints(cur.points, s.resolution, s.max_range);
+  correlative::SearchWindow w;
+  w.centre = Eigen::Vector3d(guess.x(), guess.y(), guess.phi());
+  w.half_xy = s.window_xy;
+  w.half_theta = s.window_theta;
+  w.theta_step = s.theta_step;
+  w.cost_per_m = s.cost_per_m;
+  w.cost_per_rad = s.cost_per_rad;
+  const auto best = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);
+  if (!best) return first;
+  if (p.ambiguity_radius > 0)
+  {
+    w.exclude_xy = best->pose.head<2>();
+    w.exclude_radius = p.ambiguity_radius;
+    const auto runner_up = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);
+    if (runner_up && runner_up->objective > best->objective - p.ambiguity_margin) return first;
+  }
+  return matchScans(old_scan, cur, CPose2D(best->pose.x(), best->pose.y(), best->pose.z()), plicp);
+}
+}  // namespace
+
 LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode& newest,
-                     const LoopClosureParams& p, const PlicpParams& plicp)
+                     const LoopClosureParams& p, const PlicpParams& plicp,
+                     const std::optional<CorrelativeParams>& search)
 {
   if (!old.scan || !newest.scan)
     throw std::invalid_argument("verifyLoop: node " + std::to_string(old.scan ? newest.id : old.id) +
@@ -100,14 +146,21 @@ LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode
 
   // PLICP works in the sensor frame (the mounting is the same: matchScans checks it).
   const CPose2D& mount = old.scan->scan.sensor_pose;
-  c.match = matchScans(*old.scan, newest.scan->scan, sensorMotion(mount, c.predicted), plicp);
+  const CPose2D guess = sensorMotion(mount, c.predicted);
+  c.match = matchScans(*old.scan, newest.scan->scan, guess, plicp);
+  const Eigen::Matrix3d drift = driftCovariance(c.path_gap, p);
+  if (search && search->enabled && old.scan->scan.sensor_pose == newest.scan->scan.sensor_pose &&
+      (c.match.status != MatchStatus::Converged || inlierFraction(c.match) < p.min_inlier_fraction))
+  {
+    const MatchResult m = searchedLoopMatch(*old.scan, newest.scan->scan, guess, c.match, drift, *search, p, plicp);
+    c.searched = m.status != c.match.status || !(m.pose == c.match.pose);
+    c.match = m;
+  }
   if (c.match.status != MatchStatus::Converged) return c;  // verdict MatchFailed
-  c.inlier_fraction = c.match.cur_valid_rays == 0
-                          ? 0.0
-                          : static_cast<double>(c.match.correspondences) / c.match.cur_valid_rays;
+  c.inlier_fraction = inlierFraction(c.match);
   const CPose2D measured = vehicleMotion(mount, c.match.pose);
   const Eigen::Matrix3d cov = vehicleMotionCovariance(mount, c.match.pose, c.match.covariance);
-  c.mahalanobis2 = loopMahalanobis2(c.predicted, measured, cov, driftCovariance(c.path_gap, p));
+  c.mahalanobis2 = loopMahalanobis2(c.predicted, measured, cov, drift);
   if (c.inlier_fraction < p.min_inlier_fraction)
     c.verdict = LoopCheck::Verdict::PoorOverlap;
   else if (!(c.mahalanobis2 <= p.chi2_gate))
@@ -122,11 +175,12 @@ LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode
 
 std::vector<LoopCheck> checkLoops(const PoseGraph& graph, const LoopNode& newest,
                                   const std::function<LoopNode(size_t)>& node,
-                                  const LoopClosureParams& p, const PlicpParams& plicp)
+                                  const LoopClosureParams& p, const PlicpParams& plicp,
+                                  const std::optional<CorrelativeParams>& search)
 {
   std::vector<LoopCheck> checks;
   for (const size_t id : loopCandidates(graph, newest.id, p))
-    checks.push_back(verifyLoop(graph, node(id), newest, p, plicp));
+    checks.push_back(verifyLoop(graph, node(id), newest, p, plicp, search));
   return checks;
 }
 

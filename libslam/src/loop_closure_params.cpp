@@ -13,6 +13,8 @@ void LoopClosureParams::check() const
   auto require = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [loop_closure]: ") + what);
   };
+  require(consistency_window >= 0, "consistency_window must be >= 0");
+  require(ambiguity_radius >= 0 && ambiguity_margin >= 0, "ambiguity_radius and ambiguity_margin must be >= 0");
   require(min_index_gap >= 1, "min_index_gap must be >= 1");
   require(std::isfinite(max_distance) && max_distance >= 0, "max_distance must be finite and >= 0");
   require(max_candidates >= 0, "max_candidates must be >= 0");
@@ -40,6 +42,9 @@ void LoopClosureParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   drift_theta_per_m = mrpt::DEG2RAD(
       c.read_double(s, "drift_theta_per_m_DEG", mrpt::RAD2DEG(drift_theta_per_m)));
   MRPT_LOAD_CONFIG_VAR_CS(min_drift_sigma_xy, double);
+  MRPT_LOAD_CONFIG_VAR_CS(consistency_window, int);
+  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_radius, double);
+  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_margin, double);
   min_drift_sigma_theta = mrpt::DEG2RAD(
       c.read_double(s, "min_drift_sigma_theta_DEG", mrpt::RAD2DEG(min_drift_sigma_theta)));
   check();
@@ -61,6 +66,10 @@ void LoopClosureParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_drift_sigma_xy, "[m] floor of the drift position std");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("min_drift_sigma_theta_DEG", min_drift_sigma_theta,
                                        "[deg] floor of the drift heading std");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_window,
+                               "a loop is an edge once another within this many node ids agrees (0: at once)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_radius, "[m] a loop search whose best pose farther than this from its best...");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_margin, "...scores within this of it is ambiguous: no loop");
 }
 
 }  // namespace swslam

@@ -26,7 +26,7 @@ SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
     : params_(params),
       mode_(mode),
       tracker_(params.tracking, params.plicp, params.correlative),
-      graph_(params.graph_optimizer, params.loop_closure, params.plicp),
+      graph_(params.graph_optimizer, params.loop_closure, params.plicp, params.correlative),
       map_(params.map),
       scan_queue_(static_cast<size_t>(params.system.input_queue_capacity))
 {

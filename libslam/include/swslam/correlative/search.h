@@ -27,7 +27,14 @@ struct SearchWindow
   double theta_step = 1.0 * M_PI / 180;   ///< [rad]
   double cost_per_m = 0;    ///< objective = score - cost_per_m |t - centre.xy| ...
   double cost_per_rad = 0;  ///< ... - cost_per_rad |theta - centre.z|
+  /** Poses whose translation is within exclude_radius of exclude_xy are not results (< 0:
+   * none excluded): the best pose elsewhere, to tell a distinct optimum from an ambiguous one. */
+  Eigen::Vector2d exclude_xy = Eigen::Vector2d::Zero();
+  double exclude_radius = -1;  ///< [m]
 };
+
+/** True if the translation t is inside the window's excluded disc. */
+bool excluded(const SearchWindow& w, const Eigen::Vector2d& t);
 
 /** The objective of a pose: its score less the window's costs of its offset from the centre. */
 double objective(const SearchWindow& w, double score, const Eigen::Vector3d& pose);

@@ -7,6 +7,7 @@
 // doc/loop-closure.md). An accepted pair becomes a loop edge; the caller then optimizes the
 // whole graph. Pure functions: no threads, no config reading.
 
+#include <swslam/correlative/correlative_params.h>
 #include <swslam/loop/loop_closure_params.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/pose_graph.h>
@@ -47,6 +48,7 @@ struct LoopCheck
   double path_gap = 0;            ///< [m] distance travelled between them
   mrpt::poses::CPose2D predicted; ///< graph's vehicle pose of `to` seen from `from`
   MatchResult match;              ///< PLICP of `to`'s scan against `from`'s, sensor frame
+  bool searched = false;          ///< `match` started from a correlative search's pose
   double inlier_fraction = 0;     ///< match.correspondences / match.cur_valid_rays
   double mahalanobis2 = std::numeric_limits<double>::infinity();  ///< when the match converged
   Verdict verdict = Verdict::MatchFailed;
@@ -74,14 +76,20 @@ double loopMahalanobis2(const mrpt::poses::CPose2D& predicted, const mrpt::poses
 /** Verifies one pair: PLICP of `newest`'s scan against `old`'s, starting from the graph's
  * relative vehicle pose carried into the sensor frame; then the overlap check and the gate on
  * the vehicle-frame result. Scans from different sensors give MatchFailed (InvalidInput).
+ * With `search` (and search->enabled), a match that failed or overlaps too little is redone
+ * from the best pose of a correlative search on the old scan around the guess, within
+ * 3 drift standard deviations (capped by search->window_xy and window_theta): after a long
+ * excursion the graph's guess is too far off for PLICP alone.
  * Throws std::invalid_argument for a missing node or scan, or old.id == newest.id. */
 LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode& newest,
-                     const LoopClosureParams& p, const PlicpParams& plicp);
+                     const LoopClosureParams& p, const PlicpParams& plicp,
+                     const std::optional<CorrelativeParams>& search = std::nullopt);
 
 /** loopCandidates() then verifyLoop() on each; `node(id)` gives an older node's LoopNode.
  * Returns every check (for logs); the accepted ones carry an edge. */
 std::vector<LoopCheck> checkLoops(const PoseGraph& graph, const LoopNode& newest,
                                   const std::function<LoopNode(size_t)>& node,
-                                  const LoopClosureParams& p, const PlicpParams& plicp);
+                                  const LoopClosureParams& p, const PlicpParams& plicp,
+                                  const std::optional<CorrelativeParams>& search = std::nullopt);
 
 }  // namespace swslam

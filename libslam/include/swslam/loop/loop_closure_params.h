@@ -24,6 +24,17 @@ struct LoopClosureParams : public mrpt::config::CLoadableOptions
   double min_drift_sigma_xy = 0.1;               ///< [m] floor of the position std
   double min_drift_sigma_theta = 1.0 * M_PI / 180;  ///< [rad] (ini: min_drift_sigma_theta_DEG)
 
+  // Corroboration: a verified loop becomes an edge only once another verified loop, its new
+  // node and its old node each within this many ids of this loop's, agrees with it through
+  // the graph (loopPairChi2 <= chi2_gate, local error from the drift model over the two
+  // stretches). 0: a verified loop is an edge at once.
+  int consistency_window = 10;
+  // Ambiguity of the correlative search of a loop check (verifyLoop with `search`): the best
+  // pose farther than ambiguity_radius from the search's best must have an objective at least
+  // ambiguity_margin lower, or the search gives no loop (self-similar place).
+  double ambiguity_radius = 0.5;  ///< [m] (0: no check)
+  double ambiguity_margin = 0.05;
+
   /** Throws std::invalid_argument naming the first out-of-range parameter. */
   void check() const;
 

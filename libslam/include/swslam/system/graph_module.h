@@ -10,6 +10,7 @@
 #include <swslam/graph_optimizer.h>
 #include <swslam/graph_optimizer_params.h>
 #include <swslam/loop/loop_closer.h>
+#include <swslam/loop/loop_consistency.h>
 #include <swslam/pose_graph.h>
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
@@ -37,8 +38,10 @@ struct GraphStep
 class GraphModule
 {
  public:
+  /** `search`: the correlative search of loop checks whose match from the graph's guess
+   * failed (verifyLoop); none when not given. */
   GraphModule(const GraphOptimizerParams& graph, const LoopClosureParams& loops,
-              const PlicpParams& plicp);
+              const PlicpParams& plicp, const std::optional<CorrelativeParams>& search = std::nullopt);
 
   /** Adds the node (its pose re-based on the graph's estimate of the previous node), its
    * edges and any verified loop, then optimizes the window, or everything after a loop
@@ -55,15 +58,26 @@ class GraphModule
   void addEdge(const TrackerEdge& e, GraphStep& step);
   size_t closeLoops(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
+  /** Verified loops that agree with another (pending or new) one; see consistency_window. */
+  std::vector<TrackerEdge> corroborated(size_t id, const std::vector<TrackerEdge>& verified);
+
+  struct PendingLoop
+  {
+    TrackerEdge edge;
+    LoopEdgeMeasure measure;
+    bool added = false;
+  };
 
   const GraphOptimizerParams graph_params_;
   const LoopClosureParams loop_params_;
   const PlicpParams plicp_params_;
+  const std::optional<CorrelativeParams> search_params_;
   std::vector<LoopNode> nodes_;  ///< by node id; only the owning thread
   mutable std::mutex mutex_;
   PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
   size_t loops_ = 0;   ///< guarded by mutex_
   FullOptimizationSchedule schedule_;  ///< only the owning thread
+  std::vector<PendingLoop> pending_;   ///< verified loops of the last consistency_window nodes
 };
 
 }  // namespace swslam
