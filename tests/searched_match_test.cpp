@@ -89,3 +89,36 @@ TEST(SearchedMatch, ARightFirstMatchIsKept)
   EXPECT_EQ(s.match.pose, first.pose);
   EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.03);
 }
+
+TEST(SearchedMatch, ARefinementThatLeavesTheSearchBasinIsRedoneWithinIt)
+{
+  // PLICP's keyframe disagrees with the score grid (here: the keyframe scan is taken 6 deg off
+  // the pose the grid's scan was taken at), so PLICP from the search's pose ends where the grid
+  // scores lower than the search's pose itself.
+  const auto world = test::roomWorld();
+  std::mt19937 rng(6);
+  const CPose2D a(-3, 0.5, 0.2), motion(1.1, 0.4, 0.5);
+  const PlicpParams plicp;
+  const Scan grid_scan = scanAt(world, a, rng);
+  const ReferenceScan ref(scanAt(world, a + CPose2D(0.1, 0, 6 * M_PI / 180), rng), plicp);
+  const Scan cur = scanAt(world, a + motion, rng);
+  CorrelativeParams p;
+  const auto pyramid = searchPyramid(raysOf(grid_scan), p);
+  const CPose2D guess;  // zero motion
+  MatchResult failed;   // no first match: the searched one is kept if it converges
+  const auto s = searchAndMatch(ref, pyramid, cur, guess, failed, p, plicp);
+  ASSERT_TRUE(s.replaced);
+  ASSERT_TRUE(s.bounded_refinement);
+
+  // The same search without the second refinement keeps PLICP's pose, which scores lower.
+  CorrelativeParams free = p;
+  free.refine_correspondence_dist = 0;
+  const auto f = searchAndMatch(ref, pyramid, cur, guess, failed, free, plicp);
+  ASSERT_TRUE(f.replaced);
+  EXPECT_FALSE(f.bounded_refinement);
+  EXPECT_LT(f.searched_objective, f.search_objective);
+  EXPECT_EQ(s.search_objective, f.search_objective);
+  // Here the bounded refinement scores higher, and is kept.
+  EXPECT_GT(s.searched_objective, f.searched_objective);
+  EXPECT_NE(s.match.pose, f.match.pose);
+}

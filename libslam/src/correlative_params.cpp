@@ -26,6 +26,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   MRPT_LOAD_CONFIG_VAR_CS(max_range, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_score, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_score_gain, double);
+  MRPT_LOAD_CONFIG_VAR_CS(refine_correspondence_dist, double);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -44,6 +45,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   require(max_range > 0, "max_range must be > 0");
   require(min_score >= 0 && min_score <= 1, "min_score must be in [0, 1]");
   require(min_score_gain >= 0, "min_score_gain must be >= 0");
+  require(refine_correspondence_dist >= 0, "refine_correspondence_dist must be >= 0");
 }
 
 void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -64,6 +66,7 @@ void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_range, "[m] farther points are not used");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_score, "least score of a search result");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_score_gain, "the searched match wins only with this much higher objective");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(refine_correspondence_dist, "[m] PLICP radius of the second refinement when the first scored below the search's pose (0: none)");
 }
 
 }  // namespace swslam

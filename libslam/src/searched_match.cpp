@@ -2,6 +2,7 @@
 
 #include "swslam/correlative/search.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swslam
@@ -57,12 +58,30 @@ SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid&
   out.searched_objective = -1e9;
   const auto best = correlative::searchBranchAndBound(pyramid, points, w, p.min_score);
   if (!best) return out;
+  out.search_objective = best->objective;
   if (first.ok() && (best->pose.head<2>() - vec(first.pose).head<2>()).norm() < 1.5 * p.resolution &&
       angleDiff(best->pose.z(), first.pose.phi()) < 1.5 * p.theta_step)
     return out;
-  const MatchResult second =
-      matchScans(reference, cur, CPose2D(best->pose.x(), best->pose.y(), best->pose.z()), plicp);
+  const CPose2D search_pose(best->pose.x(), best->pose.y(), best->pose.z());
+  MatchResult second = matchScans(reference, cur, search_pose, plicp);
   out.searched_objective = objectiveOf(second);
+  // PLICP (against the keyframe alone) may leave the search's basin for a pose the grid scores
+  // lower than the search's own: then refine again within a few cells of the search's pose,
+  // and keep the better of the two by the objective.
+  if (p.refine_correspondence_dist > 0 && out.searched_objective < best->objective)
+  {
+    PlicpParams bounded = plicp;
+    bounded.initial_correspondence_dist = p.refine_correspondence_dist;
+    bounded.max_correspondence_dist = std::min(plicp.max_correspondence_dist, p.refine_correspondence_dist);
+    const MatchResult local = matchScans(reference, cur, search_pose, bounded);
+    const double local_objective = objectiveOf(local);
+    out.bounded_refinement = true;
+    if (local_objective > out.searched_objective)
+    {
+      second = local;
+      out.searched_objective = local_objective;
+    }
+  }
   if (second.ok() && out.searched_objective >= out.first_objective + p.min_score_gain)
   {
     out.match = second;

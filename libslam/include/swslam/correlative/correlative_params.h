@@ -28,6 +28,9 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   double max_range = 30.0;  ///< [m] farther points are left out of the grid and the search
   double min_score = 0.1;   ///< a search result scores at least this (mean cell value, 0..1)
   double min_score_gain = 0.02;  ///< the searched match replaces the first only if its objective is this much higher
+  /** [m] when PLICP from the search's pose ends at a lower objective than that pose's, it is
+   * run again from it with this correspondence radius (0: never), the better one kept */
+  double refine_correspondence_dist = 0.3;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

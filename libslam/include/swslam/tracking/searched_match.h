@@ -28,12 +28,18 @@ struct SearchedMatch
   MatchResult match;      ///< the chosen match
   bool replaced = false;  ///< the match from the search's pose won
   double first_objective = 0, searched_objective = 0;  ///< both matches' objectives (-1e9: failed or not run)
+  double search_objective = -1e9;  ///< of the search's best pose itself (-1e9: nothing found)
+  bool bounded_refinement = false;  ///< PLICP from the search's pose was run again within refine_correspondence_dist
 };
 
 /** Searches the window around `guess` (the current sensor pose in the reference sensor
  * frame, as for matchScans) with the reference's pyramid, runs PLICP from the best pose, and
  * keeps that match only if its objective (score on the grid less the motion prior's cost) is
- * min_score_gain above that of `first` (a failed match has none). Nothing found, or a best
+ * min_score_gain above that of `first` (a failed match has none). If the match from the best
+ * pose ends at a lower objective than the best pose's own (PLICP against the keyframe alone
+ * left the search's basin), PLICP runs again from the best pose with refine_correspondence_dist
+ * as its correspondence radius, and the higher-scoring of the two is the searched match.
+ * Nothing found, or a best
  * pose in the first match's basin (within 1.5 cells and 1.5 angle steps), keeps `first`
  * without a second match. */
 SearchedMatch searchAndMatch(const ReferenceScan& reference,
