@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "test_support.h"
@@ -68,6 +69,27 @@ TEST(CorrelativeGrid, PyramidLevelsAreWindowMaxima)
       }
   // Too little padding for the depth: a window could start outside the grid and miss data.
   EXPECT_THROW(ScorePyramid(buildScoreGrid(randomPoints(rng, 5, 1), 0.1, 0.1, 6), 3), std::invalid_argument);
+}
+
+TEST(CorrelativeGrid, PyramidBoundsHoldWhereFreeSpaceReachesTheGridsEdge)
+{
+  // Free space in the padding (a submap ray whose origin lies beyond the hits): a window
+  // that sticks out of the grid has a partner scoring 0 (ScoreGrid::at), above the free
+  // cells, and its level value must not fall below that, or branch and bound prunes wrongly.
+  std::mt19937 rng(8);
+  ScoreGrid grid = buildScoreGrid(randomPoints(rng, 20, 1.0), 0.1, 0.1, 3);
+  for (auto& c : grid.cells)
+    if (c == 0) c = -255;
+  const ScorePyramid pyr(grid, 2);
+  for (int h = 1; h <= 2; h++)
+    for (int y = 0; y < grid.height; y++)
+      for (int x = 0; x < grid.width; x++)
+      {
+        int m = std::numeric_limits<int>::min();
+        for (int dy = 0; dy < (1 << h); dy++)
+          for (int dx = 0; dx < (1 << h); dx++) m = std::max(m, grid.at(x + dx, y + dy));
+        ASSERT_EQ(pyr.levels[h].at(x, y), m) << "level " << h << " cell " << x << ", " << y;
+      }
 }
 
 TEST(CorrelativeSearch, BranchAndBoundEqualsBruteForce)

@@ -37,10 +37,11 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   require(submap_keyframes >= 1, "submap_keyframes must be >= 1");
   require(resolution > 0 && sigma > 0, "resolution and sigma must be > 0");
   require(free_space_score >= -1 && free_space_score <= 0, "free_space_score must be in [-1, 0]");
-  require(window_xy >= 0 && window_xy <= 1000 * resolution,
-          "window_xy must be in [0, 1000 resolution]");
+  // Bounds that keep the pyramid (padded by the window) and the rotated lattices in memory.
+  require(window_xy >= 0 && window_xy <= 256 * resolution,
+          "window_xy must be in [0, 256 resolution]");
   require(window_theta >= 0, "window_theta_DEG must be >= 0");
-  require(theta_step > 1e-4, "theta_step_DEG must be > 0.006");
+  require(theta_step >= mrpt::DEG2RAD(0.1), "theta_step_DEG must be >= 0.1");
   require(cost_per_m >= 0 && cost_per_rad >= 0, "cost_per_m and cost_per_rad must be >= 0");
   require(max_range > 0, "max_range must be > 0");
   require(min_score >= 0 && min_score <= 1, "min_score must be in [0, 1]");
@@ -50,7 +51,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
 
 void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "search when the tracking match's prediction failed");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "search when tracking's prediction or a loop check's match failed");
   MRPT_SAVE_CONFIG_VAR_COMMENT(trigger_correction_xy, "[m] search if the match moved the prediction more than this...");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("trigger_correction_theta_DEG", trigger_correction_theta, "[deg] ...or turned it more than this...");
   MRPT_SAVE_CONFIG_VAR_COMMENT(trigger_inlier_fraction, "...or ended with fewer inliers than this fraction");

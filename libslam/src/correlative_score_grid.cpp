@@ -93,7 +93,8 @@ ScorePyramid::ScorePyramid(ScoreGrid base, int depth)
     {
       const int16_t* row = &prev[static_cast<size_t>(y) * w];
       int16_t* out = &along_x[static_cast<size_t>(y) * w];
-      for (int x = 0; x < w; x++) out[x] = x + s < w ? std::max(row[x], row[x + s]) : row[x];
+      // A partner outside the grid scores 0 (ScoreGrid::at), which a free cell is below.
+      for (int x = 0; x < w; x++) out[x] = std::max(row[x], x + s < w ? row[x + s] : int16_t{0});
     }
     ScoreGrid next = levels.back();
     for (int y = 0; y < ht; y++)
@@ -106,7 +107,7 @@ ScorePyramid::ScorePyramid(ScoreGrid base, int depth)
         for (int x = 0; x < w; x++) out[x] = std::max(a[x], b[x]);
       }
       else
-        std::copy(a, a + w, out);
+        for (int x = 0; x < w; x++) out[x] = std::max(a[x], int16_t{0});
     }
     levels.push_back(std::move(next));
   }
