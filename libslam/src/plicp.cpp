@@ -76,6 +76,7 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
       run.status == MatchStatus::Converged || run.status == MatchStatus::MaxIterations;
   const bool full = !thin || (run_ok && plicp::fullResolutionStep(reference, cur, params, run));
   const Scan& used = full ? cur : sub;  // the scan run.kept indexes
+  res.cur_valid_rays = used.size();     // so that correspondences / cur_valid_rays stays a fraction
   res.iterations = run.iterations;
   res.status = run.status;
   if (!res.ok()) return fail(res, run.status, run.message);

@@ -1,6 +1,7 @@
 #include "swslam/plicp/decimation.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace swslam::plicp
 {
@@ -23,6 +24,8 @@ Scan decimated(const Scan& s, size_t k)
   out.aperture = s.aperture;
   out.max_range = s.max_range;
   out.rejected = s.rejected;
+  if (s.angles.size() != s.size() || s.points.size() != s.size() || s.beam_index.size() != s.size())
+    throw std::invalid_argument("decimated: the scan's angles, ranges, points and beam indices differ in length");
   const size_t n = (s.size() + k - 1) / k;
   out.angles.reserve(n);
   out.ranges.reserve(n);

@@ -2,7 +2,8 @@
 // Decimation of the current scan for PLICP's iterations: every k-th valid ray, k chosen from
 // the sensor's beam spacing so that the kept rays are about a given angle apart (dense
 // sensors thinned, sparse ones untouched). A full-resolution step ends the match
-// (plicp_run.cpp), so the result and its covariance use every ray.
+// (plicp_run.cpp), so the result and its covariance use every ray; if that step fails, the
+// match keeps the thinned result and reports the thinned ray count as cur_valid_rays.
 
 #include <swslam/scan.h>
 
