@@ -4,10 +4,6 @@
 
 #include <mrpt/system/CTimeLogger.h>
 
-#include <Eigen/Dense>
-
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace swslam
@@ -20,7 +16,8 @@ GraphModule::GraphModule(const GraphOptimizerParams& graph, const LoopClosurePar
       loop_params_(loops),
       plicp_params_(plicp),
       search_params_(search),
-      schedule_(graph.full_optimization_interval)
+      schedule_(graph.full_optimization_interval),
+      corroboration_(loops)
 {
 }
 
@@ -88,7 +85,10 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
     step.loops_checked++;
     if (check.edge) verified.push_back(*check.edge);
   }
-  for (const TrackerEdge& e : corroborated(id, verified))
+  const auto corroborated = corroboration_.add(
+      id, verified, [this](size_t n) { return graph_.pose(n); },
+      [this](size_t n) { return nodes_.at(n).path_length; });
+  for (const TrackerEdge& e : corroborated)
   {
     std::lock_guard<std::mutex> lock(mutex_);
     const size_t before = step.edges_rejected;
@@ -100,42 +100,6 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
     }
   }
   return accepted;
-}
-
-std::vector<TrackerEdge> GraphModule::corroborated(size_t id, const std::vector<TrackerEdge>& verified)
-{
-  const auto w = static_cast<size_t>(loop_params_.consistency_window);
-  if (w == 0) return verified;
-  pending_.erase(std::remove_if(pending_.begin(), pending_.end(),
-                                [&](const PendingLoop& p) { return p.edge.to + w < id; }),
-                 pending_.end());
-  auto near = [w](size_t a, size_t b) { return (a > b ? a - b : b - a) <= w; };
-  std::vector<TrackerEdge> out;
-  for (const TrackerEdge& e : verified)
-  {
-    PendingLoop v;
-    v.edge = e;
-    v.measure = LoopEdgeMeasure{e.from, e.to, e.z, e.information.inverse()};
-    for (PendingLoop& p : pending_)
-    {
-      if (!near(p.edge.from, e.from) || !near(p.edge.to, e.to)) continue;
-      const LoopEdgeMeasure& l1 = p.measure;  // a -> n
-      const CPose2D rel_ab = graph_.pose(e.from) - graph_.pose(l1.from);
-      const CPose2D rel_nm = graph_.pose(e.to) - graph_.pose(l1.to);
-      const double path = std::abs(nodes_.at(e.from).path_length - nodes_.at(l1.from).path_length) +
-                          std::abs(nodes_.at(e.to).path_length - nodes_.at(l1.to).path_length);
-      const Eigen::Matrix3d local = driftCovariance(path, loop_params_);
-      if (!(loopPairChi2(l1, v.measure, rel_ab, rel_nm, std::sqrt(local(0, 0)), std::sqrt(local(2, 2))) <=
-            loop_params_.chi2_gate))
-        continue;
-      if (!p.added) out.push_back(p.edge);
-      p.added = true;
-      v.added = true;
-    }
-    if (v.added) out.push_back(e);
-    pending_.push_back(v);
-  }
-  return out;
 }
 
 void GraphModule::optimize(bool full, GraphStep& step)

@@ -10,7 +10,7 @@
 #include <swslam/graph_optimizer.h>
 #include <swslam/graph_optimizer_params.h>
 #include <swslam/loop/loop_closer.h>
-#include <swslam/loop/loop_consistency.h>
+#include <swslam/loop/loop_corroboration.h>
 #include <swslam/pose_graph.h>
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
@@ -58,15 +58,6 @@ class GraphModule
   void addEdge(const TrackerEdge& e, GraphStep& step);
   size_t closeLoops(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
-  /** Verified loops that agree with another (pending or new) one; see consistency_window. */
-  std::vector<TrackerEdge> corroborated(size_t id, const std::vector<TrackerEdge>& verified);
-
-  struct PendingLoop
-  {
-    TrackerEdge edge;
-    LoopEdgeMeasure measure;
-    bool added = false;
-  };
 
   const GraphOptimizerParams graph_params_;
   const LoopClosureParams loop_params_;
@@ -77,7 +68,7 @@ class GraphModule
   PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
   size_t loops_ = 0;   ///< guarded by mutex_
   FullOptimizationSchedule schedule_;  ///< only the owning thread
-  std::vector<PendingLoop> pending_;   ///< verified loops of the last consistency_window nodes
+  LoopCorroboration corroboration_;    ///< only the owning thread
 };
 
 }  // namespace swslam
