@@ -10,7 +10,7 @@ namespace swslam
 {
 struct CorrelativeParams : public mrpt::config::CLoadableOptions
 {
-  bool enabled = true;  ///< false: tracking never searches
+  bool enabled = true;  ///< false: neither tracking nor loop checks ever search
   // When a scan is searched: its match against the keyframe ...
   double trigger_correction_xy = 0.1;  ///< [m] ... moved the prediction more than this,
   double trigger_correction_theta = 2.0 * M_PI / 180;  ///< [rad] or turned it more (ini: _DEG),
