@@ -106,13 +106,7 @@ MatchResult searchedLoopMatch(const ReferenceScan& old_scan, const Scan& cur, co
     if (q.norm() <= s.max_range) rays.push_back({Eigen::Vector2d::Zero(), q});
   const correlative::ScorePyramid pyramid = searchPyramid(rays, s);
   const auto points = correlative::thinPoints(cur.points, s.resolution, s.max_range);
-  correlative::SearchWindow w;
-  w.centre = Eigen::Vector3d(guess.x(), guess.y(), guess.phi());
-  w.half_xy = s.window_xy;
-  w.half_theta = s.window_theta;
-  w.theta_step = s.theta_step;
-  w.cost_per_m = s.cost_per_m;
-  w.cost_per_rad = s.cost_per_rad;
+  correlative::SearchWindow w = searchWindow(s, guess);
   const auto best = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);
   if (!best) return first;
   if (p.ambiguity_radius > 0)

@@ -28,6 +28,18 @@ ScorePyramid searchPyramid(const std::vector<correlative::Ray>& reference, const
   return ScorePyramid(std::move(grid), depth);
 }
 
+correlative::SearchWindow searchWindow(const CorrelativeParams& p, const CPose2D& guess)
+{
+  correlative::SearchWindow w;
+  w.centre = vec(guess);
+  w.half_xy = p.window_xy;
+  w.half_theta = p.window_theta;
+  w.theta_step = p.theta_step;
+  w.cost_per_m = p.cost_per_m;
+  w.cost_per_rad = p.cost_per_rad;
+  return w;
+}
+
 bool predictionFailed(const MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
 {
   if (!m.ok() || m.cur_valid_rays == 0) return true;
@@ -44,13 +56,7 @@ SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid&
   out.match = first;
   const auto points = correlative::thinPoints(cur.points, p.resolution, p.max_range);
   const auto& grid = pyramid.levels.front();
-  correlative::SearchWindow w;
-  w.centre = vec(guess);
-  w.half_xy = p.window_xy;
-  w.half_theta = p.window_theta;
-  w.theta_step = p.theta_step;
-  w.cost_per_m = p.cost_per_m;
-  w.cost_per_rad = p.cost_per_rad;
+  const correlative::SearchWindow w = searchWindow(p, guess);
   auto objectiveOf = [&](const MatchResult& m) {
     return m.ok() ? correlative::objective(w, correlative::scoreAt(grid, points, vec(m.pose)), vec(m.pose)) : -1e9;
   };

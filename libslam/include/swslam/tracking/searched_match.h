@@ -5,6 +5,7 @@
 
 #include <swslam/correlative/correlative_params.h>
 #include <swslam/correlative/score_grid.h>
+#include <swslam/correlative/search.h>
 #include <swslam/plicp/plicp.h>
 
 #include <mrpt/poses/CPose2D.h>
@@ -16,6 +17,10 @@ namespace swslam
  * caller leaves out rays longer than max_range. */
 correlative::ScorePyramid searchPyramid(const std::vector<correlative::Ray>& reference,
                                         const CorrelativeParams& p);
+
+/** The search window of the parameters (window_xy, window_theta, theta_step, motion prior)
+ * centred on `guess` (a sensor pose in the reference sensor frame). */
+correlative::SearchWindow searchWindow(const CorrelativeParams& p, const mrpt::poses::CPose2D& guess);
 
 /** The match's prediction was unreliable: the match failed, ended with fewer than
  * trigger_inlier_fraction of the scan's points as inliers, or moved the guess (sensor
