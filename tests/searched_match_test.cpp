@@ -19,13 +19,6 @@ Scan scanAt(const test::World& world, const CPose2D& pose, std::mt19937& rng)
   return scanFromObservation(test::simulateObservation(world, pose, 181, M_PI, 30, 0.02, rng));
 }
 
-std::vector<correlative::Ray> raysOf(const Scan& s)
-{
-  std::vector<correlative::Ray> rays;
-  for (const auto& p : s.points) rays.push_back({Eigen::Vector2d::Zero(), p});
-  return rays;
-}
-
 MatchResult converged(const CPose2D& pose, size_t inliers, size_t rays)
 {
   MatchResult m;
@@ -51,6 +44,17 @@ TEST(SearchedMatch, PredictionFailsOnAFailedMatchFewInliersOrALargeCorrection)
   EXPECT_TRUE(predictionFailed(converged(guess, 0, 0), guess, p));
 }
 
+TEST(SearchedMatch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
+{
+  Scan s;
+  s.points = {{1, 0}, {0, 5}, {-3, 4}};
+  const auto rays = scanRays(s, 4.5);
+  ASSERT_EQ(rays.size(), 1u);
+  EXPECT_EQ(rays[0].origin, Eigen::Vector2d::Zero());
+  EXPECT_EQ(rays[0].hit, Eigen::Vector2d(1, 0));
+  EXPECT_EQ(scanRays(s, 5.0).size(), 3u);
+}
+
 TEST(SearchedMatch, RecoversALargeUnpredictedMotion)
 {
   const auto world = test::roomWorld();
@@ -63,13 +67,14 @@ TEST(SearchedMatch, RecoversALargeUnpredictedMotion)
   const CPose2D guess;  // zero motion: far from the truth
   const MatchResult first = matchScans(ref, cur, guess, plicp);
   ASSERT_TRUE(predictionFailed(first, guess, p));
-  const auto s = searchAndMatch(ref, searchPyramid(raysOf(ref.scan), p), cur, guess, first, p, plicp);
+  const auto s = searchAndMatch(ref, searchPyramid(scanRays(ref.scan, p.max_range), p), cur, guess, first, p, plicp);
   ASSERT_TRUE(s.replaced);
   ASSERT_TRUE(s.match.ok());
   EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.05);
   EXPECT_NEAR(s.match.pose.y(), motion.y(), 0.05);
   EXPECT_NEAR(std::remainder(s.match.pose.phi() - motion.phi(), 2 * M_PI), 0, 0.01);
   EXPECT_GE(s.searched_objective, s.first_objective + p.min_score_gain);
+  EXPECT_GE(s.searched_iterations, s.match.iterations);
 }
 
 TEST(SearchedMatch, ARightFirstMatchIsKept)
@@ -84,7 +89,7 @@ TEST(SearchedMatch, ARightFirstMatchIsKept)
   const CPose2D guess = motion + CPose2D(0.15, -0.1, 0.05);
   const MatchResult first = matchScans(ref, cur, guess, plicp);
   ASSERT_TRUE(first.ok());
-  const auto s = searchAndMatch(ref, searchPyramid(raysOf(ref.scan), p), cur, guess, first, p, plicp);
+  const auto s = searchAndMatch(ref, searchPyramid(scanRays(ref.scan, p.max_range), p), cur, guess, first, p, plicp);
   EXPECT_FALSE(s.replaced);
   EXPECT_EQ(s.match.pose, first.pose);
   EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.03);
@@ -103,12 +108,13 @@ TEST(SearchedMatch, ARefinementThatLeavesTheSearchBasinIsRedoneWithinIt)
   const ReferenceScan ref(scanAt(world, a + CPose2D(0.1, 0, 6 * M_PI / 180), rng), plicp);
   const Scan cur = scanAt(world, a + motion, rng);
   CorrelativeParams p;
-  const auto pyramid = searchPyramid(raysOf(grid_scan), p);
+  const auto pyramid = searchPyramid(scanRays(grid_scan, p.max_range), p);
   const CPose2D guess;  // zero motion
   MatchResult failed;   // no first match: the searched one is kept if it converges
   const auto s = searchAndMatch(ref, pyramid, cur, guess, failed, p, plicp);
   ASSERT_TRUE(s.replaced);
   ASSERT_TRUE(s.bounded_refinement);
+  EXPECT_GT(s.searched_iterations, s.match.iterations);  // both runs from the search's pose count
 
   // The same search without the second refinement keeps PLICP's pose, which scores lower.
   CorrelativeParams free = p;

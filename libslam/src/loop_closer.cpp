@@ -100,11 +100,7 @@ MatchResult searchedLoopMatch(const ReferenceScan& old_scan, const Scan& cur, co
 {
   s.window_xy = std::min(s.window_xy, 3 * std::sqrt(drift(0, 0)));
   s.window_theta = std::min(s.window_theta, 3 * std::sqrt(drift(2, 2)));
-  std::vector<correlative::Ray> rays;
-  rays.reserve(old_scan.scan.points.size());
-  for (const auto& q : old_scan.scan.points)
-    if (q.norm() <= s.max_range) rays.push_back({Eigen::Vector2d::Zero(), q});
-  const correlative::ScorePyramid pyramid = searchPyramid(rays, s);
+  const correlative::ScorePyramid pyramid = searchPyramid(scanRays(old_scan.scan, s.max_range), s);
   const auto points = correlative::thinPoints(cur.points, s.resolution, s.max_range);
   correlative::SearchWindow w = searchWindow(s, guess);
   const auto best = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);

@@ -66,12 +66,9 @@ MatcherFn plicpSearchMatcher(const PlicpParams& params, const CorrelativeParams&
     int iterations = r.iterations;
     if (predictionFailed(r, g, search))
     {
-      std::vector<correlative::Ray> rays;
-      rays.reserve(ref.scan.size());
-      for (const auto& p : ref.scan.points)
-        if (p.norm() <= search.max_range) rays.push_back({Eigen::Vector2d::Zero(), p});
-      const SearchedMatch m = searchAndMatch(ref, searchPyramid(rays, search), cur, g, r, search, params);
-      if (m.replaced) iterations += m.match.iterations;
+      const SearchedMatch m = searchAndMatch(ref, searchPyramid(scanRays(ref.scan, search.max_range), search),
+                                             cur, g, r, search, params);
+      iterations += m.searched_iterations;
       r = m.match;
     }
     return Estimate{vehicleMotion(s, r.pose), iterations, r.ok()};

@@ -28,6 +28,15 @@ ScorePyramid searchPyramid(const std::vector<correlative::Ray>& reference, const
   return ScorePyramid(std::move(grid), depth);
 }
 
+std::vector<correlative::Ray> scanRays(const Scan& scan, double max_range)
+{
+  std::vector<correlative::Ray> rays;
+  rays.reserve(scan.points.size());
+  for (const auto& q : scan.points)
+    if (q.norm() <= max_range) rays.push_back({Eigen::Vector2d::Zero(), q});
+  return rays;
+}
+
 correlative::SearchWindow searchWindow(const CorrelativeParams& p, const CPose2D& guess)
 {
   correlative::SearchWindow w;
@@ -70,6 +79,7 @@ SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid&
     return out;
   const CPose2D search_pose(best->pose.x(), best->pose.y(), best->pose.z());
   MatchResult second = matchScans(reference, cur, search_pose, plicp);
+  out.searched_iterations = second.iterations;
   out.searched_objective = objectiveOf(second);
   // PLICP (against the keyframe alone) may leave the search's basin for a pose the grid scores
   // lower than the search's own: then refine again within a few cells of the search's pose,
@@ -80,6 +90,7 @@ SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid&
     bounded.initial_correspondence_dist = p.refine_correspondence_dist;
     bounded.max_correspondence_dist = std::min(plicp.max_correspondence_dist, p.refine_correspondence_dist);
     const MatchResult local = matchScans(reference, cur, search_pose, bounded);
+    out.searched_iterations += local.iterations;
     const double local_objective = objectiveOf(local);
     out.bounded_refinement = true;
     if (local_objective > out.searched_objective)

@@ -10,6 +10,8 @@
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <vector>
+
 namespace swslam
 {
 /** The score pyramid of reference rays (in the reference sensor frame), deep enough for the
@@ -21,6 +23,10 @@ correlative::ScorePyramid searchPyramid(const std::vector<correlative::Ray>& ref
 /** The search window of the parameters (window_xy, window_theta, theta_step, motion prior)
  * centred on `guess` (a sensor pose in the reference sensor frame). */
 correlative::SearchWindow searchWindow(const CorrelativeParams& p, const mrpt::poses::CPose2D& guess);
+
+/** The rays of one scan seen from its own sensor (origin 0), up to max_range: the reference
+ * of a search against that scan alone. */
+std::vector<correlative::Ray> scanRays(const Scan& scan, double max_range);
 
 /** The match's prediction was unreliable: the match failed, ended with fewer than
  * trigger_inlier_fraction of the scan's points as inliers, or moved the guess (sensor
@@ -35,6 +41,7 @@ struct SearchedMatch
   double first_objective = 0, searched_objective = 0;  ///< both matches' objectives (-1e9: failed or not run)
   double search_objective = -1e9;  ///< of the search's best pose itself (-1e9: nothing found)
   bool bounded_refinement = false;  ///< PLICP from the search's pose was run again within refine_correspondence_dist
+  int searched_iterations = 0;      ///< PLICP iterations run from the search's pose, kept or not
 };
 
 /** Searches the window around `guess` (the current sensor pose in the reference sensor
