@@ -86,6 +86,7 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
   std::vector<Correspondence> previous, before_previous;
   std::vector<Eigen::Vector2d> cur_in_ref;  // buffers reused over the iterations
   std::vector<PointToLine> terms;
+  SearchMemory memory;  // points that moved little are not searched again
   auto settled = [&]() {
     if (radius <= params.max_correspondence_dist) return true;
     radius = std::max(params.max_correspondence_dist, 0.5 * radius);
@@ -99,7 +100,7 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
     transformInto(cur, run.x, cur_in_ref);
     auto found = run.iterations == 1 && !first.empty()
                      ? std::move(first)
-                     : findCorrespondences(ref, reference.index, cur_in_ref, radius);
+                     : findCorrespondences(ref, reference.index, cur_in_ref, radius, memory);
     run.kept = rejectOutliers(reference, cur_in_ref, std::move(found), radius, params);
     if (run.kept.size() < min_n)
     {
