@@ -162,3 +162,54 @@ TEST(PlicpCorrespondences, CloseSurfacesOfDenseScansStillDefineALine)
   EXPECT_EQ(found.size(), s.size());
   for (const auto& c : found) EXPECT_NE(c.j2, -1);
 }
+
+TEST(PlicpCorrespondences, SearchMemoryEqualsBruteForceAlongAnIcpLikeSequence)
+{
+  // A sequence of poses that converges like ICP (steps shrinking from centimetres to
+  // micrometres), with a few jumps and radius changes: every step's result equals the brute
+  // force, and most points of the small steps are answered from the memory.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const auto world = test::clutteredWorld(1);
+  size_t reused = 0, searched = 0;
+  for (double fov_deg : {180.0, 270.0, 360.0})
+  {
+    const size_t beams = fov_deg == 180 ? 361 : (fov_deg == 270 ? 1081 : 720);
+    const double fov = fov_deg * M_PI / 180 * (fov_deg == 360 ? (beams - 1.0) / beams : 1.0);
+    for (int trial = 0; trial < 3; trial++)
+    {
+      const mrpt::poses::CPose2D ref_pose(2 * U(rng), -2 + U(rng), U(rng));
+      const mrpt::poses::CPose2D motion(0.5 * U(rng), 0.5 * U(rng), 0.3 * U(rng));
+      const auto ref = scanFromObservation(
+          test::simulateObservation(world, ref_pose, beams, fov, 30, 0.03, rng));
+      const auto cur = scanFromObservation(
+          test::simulateObservation(world, ref_pose + motion, beams, fov, 30, 0.03, rng));
+      const double seg = trial % 2 ? 0.0 : 0.2;
+      const ReferenceIndex index(ref, seg);
+      SearchMemory memory;
+      Eigen::Vector3d x(motion.x() + 0.05 * U(rng), motion.y() + 0.05 * U(rng),
+                        motion.phi() + 0.02 * U(rng));
+      for (int step = 0; step < 14; step++)
+      {
+        const double scale = step == 7 ? 0.3 : 0.03 * std::pow(0.3, step % 7);  // a jump at 7
+        x += scale * Eigen::Vector3d(U(rng), U(rng), 0.3 * U(rng));
+        const double max_dist = step < 3 ? 2.0 : (step == 10 ? 1e9 : 0.5);
+        std::vector<Eigen::Vector2d> pts;
+        const double c = std::cos(x.z()), s = std::sin(x.z());
+        for (const auto& p : cur.points)
+          pts.emplace_back(c * p.x() - s * p.y() + x.x(), s * p.x() + c * p.y() + x.y());
+        const auto fast = findCorrespondences(ref, index, pts, max_dist, memory);
+        const auto slow = findCorrespondencesBruteForce(ref, pts, max_dist, seg);
+        ASSERT_EQ(fast.size(), slow.size()) << "step " << step;
+        for (size_t k = 0; k < fast.size(); k++)
+        {
+          ASSERT_EQ(fast[k], slow[k]) << "step " << step << " point " << slow[k].i;
+          ASSERT_DOUBLE_EQ(fast[k].dist2, slow[k].dist2);
+        }
+      }
+      reused += memory.reused;
+      searched += memory.searched;
+    }
+  }
+  EXPECT_GT(reused, searched);  // the memory does answer most small steps
+}

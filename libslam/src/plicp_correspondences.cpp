@@ -1,5 +1,6 @@
 #include "swslam/plicp/correspondences.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -19,9 +20,11 @@ bool better(double d2, int k, double best_d2, int best_k)
  * -1 clockwise), updating (best_d2, best_k). Trig-free: the bearing offset of ray k from the
  * point is tracked with pseudo-angles (monotone in the angle, range 4 per turn) and bounded
  * with cross and dot products. Stops when nothing beyond can be nearer; jumps over runs of
- * rays whose ranges keep them farther than the best so far. */
+ * rays whose ranges keep them farther than the best so far. `others_d2` gets a lower bound on
+ * the squared distance of every ray the walk covers except the best one: the distances it
+ * computed, and the bounds that let it stop or jump. */
 void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, double P,
-          double p_pseudo, int start, int step, double& best_d2, int& best_k)
+          double p_pseudo, int start, int step, double& best_d2, int& best_k, double& others_d2)
 {
   const int n = static_cast<int>(ref.size());
   const auto& bigger = step > 0 ? idx.up_bigger : idx.down_bigger;
@@ -46,20 +49,32 @@ void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, 
     const Eigen::Vector2d& u = idx.dirs[k];
     const double along = u.dot(p), across = step * (u.y() * p.x() - u.x() * p.y());
     const double bound = along >= 0 ? across : P;
-    if (bound > 0 && bound * bound > best_d2) return;
+    if (bound > 0 && bound * bound > best_d2)
+    {
+      others_d2 = std::min(others_d2, bound * bound);
+      return;
+    }
     const double d2 = (ref.points[k] - p).squaredNorm();
     if (better(d2, k, best_d2, best_k))
     {
+      if (best_k != kNone) others_d2 = std::min(others_d2, best_d2);
       best_d2 = d2;
       best_k = k;
     }
+    else
+      others_d2 = std::min(others_d2, d2);
     // Rays up to the next longer (shorter) one are no farther (nearer) from the origin than
     // ray k, so their distance to p is at least |P - r_k|: skip them when that beats nothing.
     const double gap = P - ref.ranges[k];
     int next = k + step;
-    if (gap * gap > best_d2) next = gap > 0 ? bigger[k] : smaller[k];
+    if (gap * gap > best_d2)
+    {
+      next = gap > 0 ? bigger[k] : smaller[k];
+      others_d2 = std::min(others_d2, gap * gap);
+    }
     k = next;
   }
+  others_d2 = 0;  // not reached (the walk ends within two turns); proves nothing
 }
 }  // namespace
 
@@ -162,34 +177,112 @@ int secondPoint(const Scan& ref, bool circular, int j1, const Eigen::Vector2d& p
                    segmentEnd(ref, circular, j1, +1, min_segment), p);
 }
 
-std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
-                                                const std::vector<Eigen::Vector2d>& cur_in_ref,
-                                                double max_dist)
+namespace
+{
+/** Both walks for point p; returns the best ray (kNone if none within sqrt(best_d2)). */
+int search(const Scan& ref, const ReferenceIndex& index, const Eigen::Vector2d& p, int& up,
+           double& best_d2, double& others_d2)
+{
+  const int n = static_cast<int>(ref.size());
+  const double P = p.norm();
+  const double pp = pseudoAngle(p.x(), p.y());
+  // Move the start from the previous point's position: O(1) expected for ordered scans.
+  while (up < n && index.pseudo[up] < pp) up++;
+  while (up > 0 && index.pseudo[up - 1] >= pp) up--;
+  int best_k = kNone;
+  walk(ref, index, p, P, pp, up, +1, best_d2, best_k, others_d2);
+  walk(ref, index, p, P, pp, up - 1, -1, best_d2, best_k, others_d2);
+  return best_k;
+}
+
+template <bool kRemember>
+std::vector<Correspondence> find(const Scan& ref, const ReferenceIndex& index,
+                                 const std::vector<Eigen::Vector2d>& cur_in_ref, double max_dist,
+                                 SearchMemory* memory)
 {
   std::vector<Correspondence> out;
   const int n = static_cast<int>(ref.size());
   if (n < 2) return out;
   out.reserve(cur_in_ref.size());
+  const double max_d2 = max_dist * max_dist;
+  // Slack on the proofs, for the rounding of the distances and bounds compared.
+  constexpr double kSlack = 1e-9;
+  if constexpr (kRemember)
+  {
+    if (memory->valid.size() != cur_in_ref.size())
+    {
+      memory->anchor.assign(cur_in_ref.size(), Eigen::Vector2d::Zero());
+      memory->nearest.assign(cur_in_ref.size(), -1);
+      memory->others.assign(cur_in_ref.size(), 0.0);
+      memory->valid.assign(cur_in_ref.size(), 0);
+    }
+  }
   int up = 0;  // first reference ray at or after the point's bearing (n if none)
   for (size_t i = 0; i < cur_in_ref.size(); i++)
   {
     const Eigen::Vector2d& p = cur_in_ref[i];
-    const double P = p.norm();
-    const double pp = pseudoAngle(p.x(), p.y());
-    // Move the start from the previous point's position: O(1) expected for ordered scans.
-    while (up < n && index.pseudo[up] < pp) up++;
-    while (up > 0 && index.pseudo[up - 1] >= pp) up--;
-
-    double best_d2 = max_dist * max_dist;
+    double best_d2 = max_d2;
     int best_k = kNone;
-    walk(ref, index, p, P, pp, up, +1, best_d2, best_k);
-    walk(ref, index, p, P, pp, up - 1, -1, best_d2, best_k);
+    bool known = false;
+    if constexpr (kRemember)
+    {
+      if (memory->valid[i])
+      {
+        // Every ray but nearest[i] is at least `clear` from p.
+        const double clear = memory->others[i] - (p - memory->anchor[i]).norm() - kSlack;
+        const int j = memory->nearest[i];
+        if (j >= 0)
+        {
+          const double d2 = (ref.points[j] - p).squaredNorm();
+          if (clear > 0 && d2 < clear * clear)  // j is still the unique nearest ray
+          {
+            known = true;
+            if (d2 < max_d2)
+            {
+              best_d2 = d2;
+              best_k = j;
+            }
+          }
+        }
+        else if (clear >= max_dist)
+          known = true;  // still nothing within the radius
+        if (known) memory->reused++;
+      }
+    }
+    if (!known)
+    {
+      double others_d2 = std::numeric_limits<double>::infinity();
+      best_k = search(ref, index, p, up, best_d2, others_d2);
+      if constexpr (kRemember)
+      {
+        memory->searched++;
+        memory->anchor[i] = p;
+        memory->nearest[i] = best_k == kNone ? -1 : best_k;
+        memory->others[i] = std::sqrt(others_d2);
+        memory->valid[i] = 1;
+      }
+    }
     if (best_k == kNone) continue;
     const int j2 = closerEnd(ref, index.segment_lo[best_k], index.segment_hi[best_k], p);
     if (j2 < 0) continue;
     out.push_back({static_cast<int>(i), best_k, j2, best_d2});
   }
   return out;
+}
+}  // namespace
+
+std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
+                                                const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                                double max_dist)
+{
+  return find<false>(ref, index, cur_in_ref, max_dist, nullptr);
+}
+
+std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
+                                                const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                                double max_dist, SearchMemory& memory)
+{
+  return find<true>(ref, index, cur_in_ref, max_dist, &memory);
 }
 
 std::vector<Correspondence> findCorrespondencesBruteForce(

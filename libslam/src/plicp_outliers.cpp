@@ -5,29 +5,39 @@
 
 namespace swslam::plicp
 {
+void keepNearestPerReferenceInPlace(std::vector<Correspondence>& cs, int ref_size)
+{
+  // Index into `cs` of the nearest match of each j1 (per-thread buffer: no allocation per call).
+  thread_local std::vector<int> owner;
+  owner.assign(ref_size, -1);
+  const int n = static_cast<int>(cs.size());
+  for (int k = 0; k < n; k++)
+  {
+    int& o = owner[cs[k].j1];
+    if (o < 0 || cs[k].dist2 < cs[o].dist2) o = k;
+  }
+  int w = 0;
+  for (int k = 0; k < n; k++)
+    if (owner[cs[k].j1] == k) cs[w++] = cs[k];  // w <= k: the owner entries read stay intact
+  cs.resize(w);
+}
+
 std::vector<Correspondence> keepNearestPerReference(const std::vector<Correspondence>& in,
                                                     int ref_size)
 {
-  // Index into `in` of the nearest match of each j1 (per-thread buffer: no allocation per call).
-  thread_local std::vector<int> owner;
-  owner.assign(ref_size, -1);
-  for (int k = 0; k < static_cast<int>(in.size()); k++)
-  {
-    int& o = owner[in[k].j1];
-    if (o < 0 || in[k].dist2 < in[o].dist2) o = k;
-  }
-  std::vector<Correspondence> out;
-  out.reserve(in.size());
-  for (int k = 0; k < static_cast<int>(in.size()); k++)
-    if (owner[in[k].j1] == k) out.push_back(in[k]);
+  std::vector<Correspondence> out = in;
+  keepNearestPerReferenceInPlace(out, ref_size);
   return out;
 }
 
-std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
-                                        const std::vector<double>& errors, double keep_fraction,
-                                        double adaptive_quantile, double adaptive_mult)
+void trimByErrorInPlace(std::vector<Correspondence>& cs, std::vector<double>& errors,
+                        double keep_fraction, double adaptive_quantile, double adaptive_mult)
 {
-  if (in.empty()) return {};
+  if (cs.empty())
+  {
+    errors.clear();
+    return;
+  }
   thread_local std::vector<double> sorted;  // per-thread buffer: no allocation per call
   sorted.assign(errors.begin(), errors.end());
   auto rank = [&](double q) {
@@ -41,10 +51,24 @@ std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
   std::nth_element(sorted.begin(), sorted.begin() + k_lo, sorted.end());
   if (k_hi > k_lo) std::nth_element(sorted.begin() + k_lo + 1, sorted.begin() + k_hi, sorted.end());
   const double threshold = std::min(sorted[k_keep], adaptive_mult * sorted[k_adapt]);
-  std::vector<Correspondence> out;
-  out.reserve(in.size());
-  for (size_t k = 0; k < in.size(); k++)
-    if (errors[k] <= threshold) out.push_back(in[k]);
+  size_t w = 0;
+  for (size_t k = 0; k < cs.size(); k++)
+    if (errors[k] <= threshold)
+    {
+      cs[w] = cs[k];
+      errors[w++] = errors[k];
+    }
+  cs.resize(w);
+  errors.resize(w);
+}
+
+std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
+                                        const std::vector<double>& errors, double keep_fraction,
+                                        double adaptive_quantile, double adaptive_mult)
+{
+  std::vector<Correspondence> out = in;
+  std::vector<double> e = errors;
+  trimByErrorInPlace(out, e, keep_fraction, adaptive_quantile, adaptive_mult);
   return out;
 }
 

@@ -59,9 +59,16 @@ std::vector<Correspondence> rejectOutliers(const ReferenceScan& reference,
                                            const PlicpParams& params)
 {
   if (params.remove_doubles && radius <= params.max_correspondence_dist)
-    found = keepNearestPerReference(found, static_cast<int>(reference.scan.size()));
-  return trimByError(found, lineErrors(reference, cur_in_ref, found), params.trim_keep_fraction,
-                            params.adaptive_quantile, params.adaptive_mult);
+    keepNearestPerReferenceInPlace(found, static_cast<int>(reference.scan.size()));
+  thread_local std::vector<double> errors;  // per-thread buffer: no allocation per call
+  const Scan& ref = reference.scan;
+  errors.resize(found.size());
+  for (size_t k = 0; k < found.size(); k++)
+    errors[k] = std::abs(correspondenceNormal(ref, reference.index, found[k])
+                             .dot(cur_in_ref[found[k].i] - ref.points[found[k].j1]));
+  trimByErrorInPlace(found, errors, params.trim_keep_fraction, params.adaptive_quantile,
+                     params.adaptive_mult);
+  return found;
 }
 
 /** Convergence test of a step: the epsilons at the final radius; at a coarse radius only
@@ -86,6 +93,7 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
   std::vector<Correspondence> previous, before_previous;
   std::vector<Eigen::Vector2d> cur_in_ref;  // buffers reused over the iterations
   std::vector<PointToLine> terms;
+  SearchMemory memory;  // points that moved little are not searched again
   auto settled = [&]() {
     if (radius <= params.max_correspondence_dist) return true;
     radius = std::max(params.max_correspondence_dist, 0.5 * radius);
@@ -99,7 +107,7 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
     transformInto(cur, run.x, cur_in_ref);
     auto found = run.iterations == 1 && !first.empty()
                      ? std::move(first)
-                     : findCorrespondences(ref, reference.index, cur_in_ref, radius);
+                     : findCorrespondences(ref, reference.index, cur_in_ref, radius, memory);
     run.kept = rejectOutliers(reference, cur_in_ref, std::move(found), radius, params);
     if (run.kept.size() < min_n)
     {

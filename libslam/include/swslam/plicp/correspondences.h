@@ -56,6 +56,24 @@ inline Eigen::Vector2d correspondenceNormal(const Scan& ref, const ReferenceInde
 /** A cheap monotone stand-in for atan2(y, x): in [-2, 2), 2 per half turn. */
 double pseudoAngle(double x, double y);
 
+/** What the last full search of each current point proved, for findCorrespondences() to
+ * reuse while the point moves little between iterations. Valid for one reference scan and one
+ * current scan (indices of its points); a default-constructed memory is empty. For point i
+ * searched at `anchor[i]`: `nearest[i]` is its nearest reference ray if one was within the
+ * search radius (-1 otherwise), and every *other* reference ray is at least `others[i]` from
+ * `anchor[i]`. At a new position p with delta = |p - anchor[i]|, every other ray is then at
+ * least others[i] - delta from p (triangle inequality), so nearest[i] is still the unique
+ * nearest ray when it is closer than that, and no ray is within r if others[i] - delta >= r. */
+struct SearchMemory
+{
+  std::vector<Eigen::Vector2d> anchor;
+  std::vector<int> nearest;
+  std::vector<double> others;
+  std::vector<char> valid;
+  size_t reused = 0;    ///< points answered from the memory (statistics)
+  size_t searched = 0;  ///< points searched
+};
+
 /** Fast search: expected O(n) over all current points. Starts each search from the previous
  * point's position in the reference scan, walks away from the point's bearing in both
  * directions and stops or jumps only when the skipped rays provably cannot be closer.
@@ -64,6 +82,13 @@ double pseudoAngle(double x, double y);
 std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
                                                 const std::vector<Eigen::Vector2d>& cur_in_ref,
                                                 double max_dist);
+
+/** The same result, reusing and updating `memory` (see SearchMemory): a point whose last
+ * search still proves its answer is not searched again. Over the iterations of one match the
+ * points move by millimetres, and most are answered by one distance. */
+std::vector<Correspondence> findCorrespondences(const Scan& ref, const ReferenceIndex& index,
+                                                const std::vector<Eigen::Vector2d>& cur_in_ref,
+                                                double max_dist, SearchMemory& memory);
 
 /** Slow, obviously correct version: checks every reference point, and finds j2 by walking
  * the scan (secondPoint()). Same output as findCorrespondences() with an index built with

@@ -19,4 +19,11 @@ std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
                                         const std::vector<double>& errors, double keep_fraction,
                                         double adaptive_quantile, double adaptive_mult);
 
+/** keepNearestPerReference() in place (no allocation). */
+void keepNearestPerReferenceInPlace(std::vector<Correspondence>& cs, int ref_size);
+
+/** trimByError() in place: `cs` and `errors` (aligned) keep only the survivors, in order. */
+void trimByErrorInPlace(std::vector<Correspondence>& cs, std::vector<double>& errors,
+                        double keep_fraction, double adaptive_quantile, double adaptive_mult);
+
 }  // namespace swslam::plicp
