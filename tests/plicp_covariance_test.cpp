@@ -172,3 +172,40 @@ TEST(PlicpCovariance, CorridorAxisIsMuchLessCertain)
   EXPECT_GT(res.covariance(0, 0), 20 * res.covariance(2, 2));
 }
 
+
+TEST(PlicpCovariance, ResidualVarianceFactorIsTheResidualsNoiseOverTheDatasheets)
+{
+  // 23 residuals of 6 cm rms less three fitted parameters: 4 times the variance of 3 cm.
+  const size_t n = 23;
+  const double sum = (n - 3) * 0.06 * 0.06;
+  EXPECT_NEAR(plicp::residualVarianceFactor(sum, n, 0.03), 4.0, 1e-12);
+  // Residuals within the datasheet's noise do not shrink the covariance.
+  EXPECT_EQ(plicp::residualVarianceFactor((n - 3) * 0.01 * 0.01, n, 0.03), 1.0);
+  EXPECT_EQ(plicp::residualVarianceFactor(0.0, n, 0.03), 1.0);
+  // Three residuals or fewer leave no degree of freedom: no estimate.
+  EXPECT_EQ(plicp::residualVarianceFactor(1.0, 3, 0.03), 1.0);
+}
+
+TEST(PlicpCovariance, NoisierScansThanTheDatasheetsScaleTheCovarianceByTheFactor)
+{
+  // Scans with 10 cm noise matched with range_sigma 3 cm: the residuals show the larger
+  // noise, and the covariance is the closed form's times their variance factor.
+  std::mt19937 rng(4);
+  const auto world = test::roomWorld();
+  const mrpt::poses::CPose2D ref_pose(-1, 0.5, 0.2), motion(0.3, 0.1, 0.05);
+  const ReferenceScan ref(scanFromObservation(
+      test::simulateObservation(world, ref_pose, 181, 1.5 * M_PI, 30, 0.1, rng)));
+  const auto cur = scanFromObservation(
+      test::simulateObservation(world, ref_pose + motion, 181, 1.5 * M_PI, 30, 0.1, rng));
+  PlicpParams off;
+  off.covariance_from_residuals = false;
+  PlicpParams on;
+  const auto a = matchScans(ref, cur, motion, off), b = matchScans(ref, cur, motion, on);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  EXPECT_EQ(a.variance_factor, 1.0);
+  const double f = plicp::residualVarianceFactor(b.sum_sq_residuals, b.correspondences, on.range_sigma);
+  EXPECT_GT(f, 3.0);  // (10 cm / 3 cm)^2 = 11 for the current point alone, less after trimming
+  EXPECT_EQ(b.variance_factor, f);
+  EXPECT_TRUE(b.covariance.isApprox(f * a.covariance, 1e-12));
+  EXPECT_TRUE(b.pose == a.pose);
+}

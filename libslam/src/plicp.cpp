@@ -106,6 +106,11 @@ MatchResult matchScans(const ReferenceScan& reference, const Scan& cur,
                          ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
   }
   res.covariance = plicp::plicpCovariance(cov_terms, x, params.range_sigma);
+  if (params.covariance_from_residuals)
+  {
+    res.variance_factor = plicp::residualVarianceFactor(res.sum_sq_residuals, kept.size(), params.range_sigma);
+    res.covariance *= res.variance_factor;
+  }
   return res;
 }
 

@@ -89,6 +89,12 @@ TermDerivatives termDerivatives(const CovarianceTerm& t, const Eigen::Vector3d& 
   return derivativesWith(t, x, rot(x.z()));
 }
 
+double residualVarianceFactor(double sum_sq_residuals, size_t n, double range_sigma)
+{
+  if (n <= 3) return 1.0;
+  return std::max(1.0, sum_sq_residuals / (static_cast<double>(n - 3) * range_sigma * range_sigma));
+}
+
 Eigen::Matrix3d plicpCovariance(const std::vector<CovarianceTerm>& terms, const Eigen::Vector3d& x,
                                 double range_sigma, double unobservable_variance)
 {

@@ -31,6 +31,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   max_correction_theta = mrpt::DEG2RAD(
       c.read_double(s, "max_correction_theta_DEG", mrpt::RAD2DEG(max_correction_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(range_sigma, double);
+  MRPT_LOAD_CONFIG_VAR_CS(covariance_from_residuals, bool);
 
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
@@ -78,6 +79,7 @@ void PlicpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_correction_xy, "[m] results farther from the guess are 'diverged'");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("max_correction_theta_DEG", max_correction_theta, "[deg] same for rotation");
   MRPT_SAVE_CONFIG_VAR_COMMENT(range_sigma, "[m] range noise std (sensor datasheet), for the covariance");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(covariance_from_residuals, "Scale the covariance by sum r^2 / (n - 3) / range_sigma^2 when above 1 (a posteriori variance factor)");
 }
 
 }  // namespace swslam

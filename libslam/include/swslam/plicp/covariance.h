@@ -4,6 +4,7 @@
 // with z the measured ranges of the rays used by the correspondences.
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <vector>
 
 namespace swslam::plicp
@@ -33,6 +34,13 @@ double termCost(const CovarianceTerm& t, const Eigen::Vector3d& x);
 /** d(n n')/drho_j1 and d(n n')/drho_j2 of eq. (9), analytic. */
 void normalProjectorDerivatives(const CovarianceTerm& t, Eigen::Matrix2d& dC_j1,
                                 Eigen::Matrix2d& dC_j2);
+
+/** A posteriori variance factor of a match: the noise variance its residuals show,
+ * sum_sq_residuals / (n - 3) (three parameters fitted to n point-to-line residuals), over
+ * range_sigma^2, floored at 1 (1 when n <= 3). The covariance scales with the noise variance,
+ * so multiplying it by this factor is the covariance under the larger of the datasheet's noise
+ * and the residuals' (unmodelled structure, low overlap, a wrong local minimum). */
+double residualVarianceFactor(double sum_sq_residuals, size_t n, double range_sigma);
 
 /** Covariance of x (eq. 4, 10) with independent range noise of std `range_sigma`.
  * Directions of x that the terms do not constrain (a corridor's axis) get variance

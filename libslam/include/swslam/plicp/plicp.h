@@ -36,6 +36,9 @@ struct PlicpParams : public mrpt::config::CLoadableOptions
   double max_correction_xy = 5.0;    ///< [m] a result farther from the guess is "diverged"
   double max_correction_theta = M_PI / 2;  ///< [rad] (ini: max_correction_theta_DEG)
   double range_sigma = 0.03;         ///< [m] range noise std for the covariance (datasheet)
+  /** scale the covariance by the a posteriori variance factor, when the residuals show more
+   * noise than range_sigma (plicp::residualVarianceFactor) */
+  bool covariance_from_residuals = true;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -61,6 +64,7 @@ struct MatchResult
   size_t correspondences = 0;   ///< valid correspondences at the end
   size_t inliers = 0;  ///< of them, those within 3 range_sigma of the reference surface
   double sum_sq_residuals = 0;  ///< sum of squared point-to-line distances at the end [m^2]
+  double variance_factor = 1;   ///< the covariance's a posteriori scale (>= 1; 1 when not used)
   std::string message;          ///< why it failed, when it did
 
   bool ok() const { return status == MatchStatus::Converged || status == MatchStatus::MaxIterations; }
