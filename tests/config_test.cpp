@@ -93,6 +93,22 @@ TEST(Config, OutOfRangeValueIsAnError)
   EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
 }
 
+TEST(Config, BrokenCrossSectionRuleIsAnErrorNamingBothKeys)
+{
+  mrpt::config::CConfigFileMemory cfg(
+      "[tracking]\ndense_max_index_gap = 40\n[loop_closure]\nmin_index_gap = 30\n");
+  try
+  {
+    loadSystemParams(cfg);
+    FAIL() << "expected std::invalid_argument";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("dense_max_index_gap"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("min_index_gap"), std::string::npos);
+  }
+}
+
 TEST(Config, MissingFileIsAnError)
 {
   EXPECT_THROW(loadSystemParams(std::string("/nonexistent/x.ini")), std::invalid_argument);

@@ -88,6 +88,15 @@ TEST(OfflineRun, BadConfigOrInputIsAUsageErrorThatWritesNothing)
   EXPECT_NE(err.str().find("keyframe_translaton"), std::string::npos) << err.str();
   EXPECT_FALSE(std::filesystem::exists(o.output));
 
+  {  // each key valid alone, the pair not: still a usage error, not an abort
+    std::ofstream ini(dir + "/bad.ini");
+    ini << "[tracking]\ndense_max_index_gap = 40\n[loop_closure]\nmin_index_gap = 30\n";
+  }
+  err.str("");
+  EXPECT_EQ(runOffline(o, out, err), kExitUsage);
+  EXPECT_NE(err.str().find("dense_max_index_gap"), std::string::npos) << err.str();
+  EXPECT_FALSE(std::filesystem::exists(o.output));
+
   o.config = src + "/config/default.ini";
   o.input = dir + "/missing.rawlog";
   err.str("");

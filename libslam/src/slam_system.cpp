@@ -30,10 +30,7 @@ SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
       map_(params.map),
       scan_queue_(static_cast<size_t>(params.system.input_queue_capacity))
 {
-  if (params.tracking.dense_max_index_gap > params.loop_closure.min_index_gap)
-    throw std::invalid_argument(
-        "config: [tracking] dense_max_index_gap must not exceed [loop_closure] min_index_gap "
-        "(a pair of nodes is either a dense neighbour or a loop candidate)");
+  checkCrossSectionRules(params);
   if (mode_ == RunMode::Threaded)
   {
     tracking_thread_ = std::thread([this] { trackingLoop(); });

@@ -61,7 +61,16 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg,
     checkKnownKeys(cfg, name, *module);
     module->loadFromConfigFile(cfg, name);
   }
+  checkCrossSectionRules(p);
   return p;
+}
+
+void checkCrossSectionRules(const SystemParams& params)
+{
+  if (params.tracking.dense_max_index_gap > params.loop_closure.min_index_gap)
+    throw std::invalid_argument(
+        "config: [tracking] dense_max_index_gap must not exceed [loop_closure] min_index_gap "
+        "(a pair of nodes is either a dense neighbour or a loop candidate)");
 }
 
 void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase& cfg)

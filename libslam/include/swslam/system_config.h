@@ -39,8 +39,13 @@ struct SystemParams
   static std::vector<std::string> sections();
 };
 
+/** Rules that span sections (each module checks its own keys when loading): throws
+ * std::invalid_argument naming the keys. Called by loadSystemParams() and SlamSystem. */
+void checkCrossSectionRules(const SystemParams& params);
+
 /** Loads every section present; absent sections keep their defaults. Throws
- * std::invalid_argument naming the section or key that is wrong. */
+ * std::invalid_argument naming the section or key that is wrong, or the keys of a broken
+ * cross-section rule. */
 SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg);
 /** Same, in a file that also holds other programs' sections (e.g. a sensor's [LASER_2D]):
  * those are allowed, the swslam ones are still checked key by key. */
