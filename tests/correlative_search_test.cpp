@@ -111,6 +111,7 @@ TEST(CorrelativeSearch, BranchAndBoundEqualsBruteForce)
     // With and without a motion prior (costs in score units per metre and radian).
     w.cost_per_m = trial < 3 ? 0.0 : 0.1;
     w.cost_per_rad = trial < 3 ? 0.0 : 0.05 * (trial - 2);
+    w.cost_per_m2 = trial == 2 || trial == 5 ? 0.08 : 0.0;  // the steady-motion prior's quadratic cost
     const double res = trial % 2 ? 0.1 : 0.15;
     const int depth = depthForWindow(w.half_xy, res) - trial % 2;  // full and shallower pyramids
     ScoreGrid grid = buildScoreGrid(ref, res, 0.15, (1 << depth) - 1);

@@ -27,6 +27,9 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   MRPT_LOAD_CONFIG_VAR_CS(min_score, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_score_gain, double);
   MRPT_LOAD_CONFIG_VAR_CS(refine_correspondence_dist, double);
+  MRPT_LOAD_CONFIG_VAR_CS(steady_prior_cost, double);
+  MRPT_LOAD_CONFIG_VAR_CS(steady_sigma_min, double);
+  MRPT_LOAD_CONFIG_VAR_CS(steady_min_step, double);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -47,6 +50,9 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   require(min_score >= 0 && min_score <= 1, "min_score must be in [0, 1]");
   require(min_score_gain >= 0, "min_score_gain must be >= 0");
   require(refine_correspondence_dist >= 0, "refine_correspondence_dist must be >= 0");
+  require(steady_prior_cost >= 0, "steady_prior_cost must be >= 0");
+  require(steady_sigma_min > 0, "steady_sigma_min must be > 0");
+  require(steady_min_step >= 0, "steady_min_step must be >= 0");
 }
 
 void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -68,6 +74,9 @@ void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_score, "least score of a search result");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_score_gain, "the searched match wins only with this much higher objective");
   MRPT_SAVE_CONFIG_VAR_COMMENT(refine_correspondence_dist, "[m] PLICP radius of the second refinement when the first scored below the search's pose (0: none)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(steady_prior_cost, "steady-motion prior: score lost at one sigma from the prediction (0: none)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(steady_sigma_min, "[m] least sigma: the spread of the recent steps");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(steady_min_step, "[m] the prior applies while the last 3 steps average at least this");
 }
 
 }  // namespace swslam

@@ -9,6 +9,9 @@ namespace swslam::correlative
 {
 namespace
 {
+/** The motion prior's cost of a translation d from the window's centre (increasing in d, so
+ * a block's nearest point bounds it). */
+double translationCost(const SearchWindow& w, double d) { return w.cost_per_m * d + w.cost_per_m2 * d * d; }
 /** Cells of the points turned by theta and moved by the window's centre. */
 std::vector<Eigen::Vector2i> rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts,
                                           double theta, const Eigen::Vector2d& t)
@@ -62,7 +65,7 @@ class Lattice
   {
     auto gap = [](int lo, int hi) { return lo > 0 ? lo : (hi < 0 ? -hi : 0); };
     return sum / norm_ - w_.cost_per_rad * std::abs(std::remainder(angles_[k] - w_.centre.z(), 2 * M_PI)) -
-           w_.cost_per_m * res_ * std::hypot(gap(i0, i1), gap(j0, j1));
+           translationCost(w_, res_ * std::hypot(gap(i0, i1), gap(j0, j1)));
   }
   SearchResult result(int k, int i, int j, int32_t sum, size_t evaluated) const
   {
@@ -143,7 +146,7 @@ class BranchAndBound
 
 double objective(const SearchWindow& w, double score, const Eigen::Vector3d& pose)
 {
-  return score - w.cost_per_m * (pose.head<2>() - w.centre.head<2>()).norm() -
+  return score - translationCost(w, (pose.head<2>() - w.centre.head<2>()).norm()) -
          w.cost_per_rad * std::abs(std::remainder(pose.z() - w.centre.z(), 2 * M_PI));
 }
 

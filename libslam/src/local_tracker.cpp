@@ -74,7 +74,8 @@ MatchResult LocalTracker::matchLast(const Scan& scan, const CPose2D& guess, Trac
         searchPyramid(submapRays(), correlative_));
     search_pyramid_keyframe_ = last.id;
   }
-  const SearchedMatch s = searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_);
+  const SearchedMatch s = searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_,
+                                         steady_.costPerM2(correlative_));
   step.searched = true;
   if (s.replaced) step.source = TrackingSource::Searched;
   return s.match;
@@ -159,6 +160,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   last_motion_ = rel - relative_;
+  steady_.add(last_motion_);
   relative_ = rel;
   step.keyframe = last.id;
   step.relative = rel;

@@ -59,13 +59,14 @@ bool predictionFailed(const MatchResult& m, const CPose2D& guess, const Correlat
 
 SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid& pyramid,
                              const Scan& cur, const CPose2D& guess, const MatchResult& first,
-                             const CorrelativeParams& p, const PlicpParams& plicp)
+                             const CorrelativeParams& p, const PlicpParams& plicp, double cost_per_m2)
 {
   SearchedMatch out;
   out.match = first;
   const auto points = correlative::thinPoints(cur.points, p.resolution, p.max_range);
   const auto& grid = pyramid.levels.front();
-  const correlative::SearchWindow w = searchWindow(p, guess);
+  correlative::SearchWindow w = searchWindow(p, guess);
+  w.cost_per_m2 = cost_per_m2;
   auto objectiveOf = [&](const MatchResult& m) {
     return m.ok() ? correlative::objective(w, correlative::scoreAt(grid, points, vec(m.pose)), vec(m.pose)) : -1e9;
   };

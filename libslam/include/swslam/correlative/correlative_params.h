@@ -31,6 +31,12 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   /** [m] when PLICP from the search's pose ends at a lower objective than that pose's, it is
    * run again from it with this correspondence radius (0: never), the better one kept */
   double refine_correspondence_dist = 0.3;
+  // Steady-motion prior (tracking/steady_motion.h): while the last 3 steps average at least
+  // steady_min_step, the search also loses steady_prior_cost (d / sigma)^2 at a distance d from
+  // the prediction, sigma the spread of the recent steps (at least steady_sigma_min).
+  double steady_prior_cost = 0.002;  ///< score lost at one sigma (0: no such prior)
+  double steady_sigma_min = 0.3;     ///< [m]
+  double steady_min_step = 0.5;      ///< [m] per scan
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

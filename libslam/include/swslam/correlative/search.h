@@ -27,6 +27,7 @@ struct SearchWindow
   double theta_step = 1.0 * M_PI / 180;   ///< [rad]
   double cost_per_m = 0;    ///< objective = score - cost_per_m |t - centre.xy| ...
   double cost_per_rad = 0;  ///< ... - cost_per_rad |theta - centre.z|
+  double cost_per_m2 = 0;   ///< ... - cost_per_m2 |t - centre.xy|^2 (a Gaussian prior)
   /** Poses whose translation is within exclude_radius of exclude_xy are not results (< 0:
    * none excluded): the best pose elsewhere, to tell a distinct optimum from an ambiguous one. */
   Eigen::Vector2d exclude_xy = Eigen::Vector2d::Zero();

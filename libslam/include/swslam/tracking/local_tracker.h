@@ -8,6 +8,7 @@
 #include <swslam/correlative/score_grid.h>
 #include <swslam/edge_kind.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/tracking/steady_motion.h>
 #include <swslam/tracking/tracking_params.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -104,6 +105,7 @@ class LocalTracker
   std::vector<Keyframe> keyframes_;
   mrpt::poses::CPose2D relative_;     ///< last scan's vehicle pose relative to the last keyframe
   mrpt::poses::CPose2D last_motion_;  ///< vehicle motion between the last two scans
+  SteadyMotion steady_;  ///< the recent motions, for the search's steady-motion prior
 };
 
 /** Information matrix of a covariance, with variances floored at `min_variance` so that a

@@ -53,10 +53,13 @@ struct SearchedMatch
  * as its correspondence radius, and the higher-scoring of the two is the searched match.
  * Nothing found, or a best
  * pose in the first match's basin (within 1.5 cells and 1.5 angle steps), keeps `first`
- * without a second match. */
+ * without a second match. `cost_per_m2` adds a quadratic translation cost to the window's
+ * motion prior (the steady-motion prior, tracking/steady_motion.h), in the search and in
+ * both objectives. */
 SearchedMatch searchAndMatch(const ReferenceScan& reference,
                              const correlative::ScorePyramid& pyramid, const Scan& cur,
                              const mrpt::poses::CPose2D& guess, const MatchResult& first,
-                             const CorrelativeParams& p, const PlicpParams& plicp);
+                             const CorrelativeParams& p, const PlicpParams& plicp,
+                             double cost_per_m2 = 0);
 
 }  // namespace swslam
