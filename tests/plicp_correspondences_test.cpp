@@ -35,6 +35,25 @@ void expectSameAsBruteForce(const Scan& ref, const Scan& cur, const mrpt::poses:
     ASSERT_DOUBLE_EQ(fast[k].dist2, slow[k].dist2);
   }
 }
+
+/** A scan of `world` from a random pose, and one after a random motion from there: `beams`
+ * rays over `fov_deg` (a 360° scan does not repeat its first ray), 3 cm range noise. */
+struct ScanPair
+{
+  Scan ref, cur;
+  mrpt::poses::CPose2D motion;
+};
+ScanPair randomScanPair(const test::World& world, double fov_deg, size_t beams, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> U(-1, 1);
+  const double fov = fov_deg * M_PI / 180 * (fov_deg == 360 ? (beams - 1.0) / beams : 1.0);
+  const mrpt::poses::CPose2D ref_pose(2 * U(rng), -2 + U(rng), U(rng));
+  const mrpt::poses::CPose2D motion(0.5 * U(rng), 0.5 * U(rng), 0.3 * U(rng));
+  auto ref = scanFromObservation(test::simulateObservation(world, ref_pose, beams, fov, 30, 0.03, rng));
+  auto cur = scanFromObservation(
+      test::simulateObservation(world, ref_pose + motion, beams, fov, 30, 0.03, rng));
+  return {std::move(ref), std::move(cur), motion};
+}
 }  // namespace
 
 TEST(PlicpCorrespondences, FastSearchEqualsBruteForce)
@@ -45,15 +64,9 @@ TEST(PlicpCorrespondences, FastSearchEqualsBruteForce)
   for (double fov_deg : {180.0, 270.0, 360.0})
   {
     const size_t beams = fov_deg == 180 ? 181 : (fov_deg == 270 ? 1081 : 720);
-    const double fov = fov_deg * M_PI / 180 * (fov_deg == 360 ? (beams - 1.0) / beams : 1.0);
     for (int trial = 0; trial < 6; trial++)
     {
-      const mrpt::poses::CPose2D ref_pose(2 * U(rng), -2 + U(rng), U(rng));
-      const mrpt::poses::CPose2D motion(0.5 * U(rng), 0.5 * U(rng), 0.3 * U(rng));
-      const auto ref = scanFromObservation(
-          test::simulateObservation(world, ref_pose, beams, fov, 30, 0.03, rng));
-      const auto cur = scanFromObservation(
-          test::simulateObservation(world, ref_pose + motion, beams, fov, 30, 0.03, rng));
+      const auto [ref, cur, motion] = randomScanPair(world, fov_deg, beams, rng);
       // From the truth, from a perturbed guess, and from identity; several thresholds.
       for (double max_dist : {0.3, 1.5, 1e9})
       {
@@ -175,15 +188,9 @@ TEST(PlicpCorrespondences, SearchMemoryEqualsBruteForceAlongAnIcpLikeSequence)
   for (double fov_deg : {180.0, 270.0, 360.0})
   {
     const size_t beams = fov_deg == 180 ? 361 : (fov_deg == 270 ? 1081 : 720);
-    const double fov = fov_deg * M_PI / 180 * (fov_deg == 360 ? (beams - 1.0) / beams : 1.0);
     for (int trial = 0; trial < 3; trial++)
     {
-      const mrpt::poses::CPose2D ref_pose(2 * U(rng), -2 + U(rng), U(rng));
-      const mrpt::poses::CPose2D motion(0.5 * U(rng), 0.5 * U(rng), 0.3 * U(rng));
-      const auto ref = scanFromObservation(
-          test::simulateObservation(world, ref_pose, beams, fov, 30, 0.03, rng));
-      const auto cur = scanFromObservation(
-          test::simulateObservation(world, ref_pose + motion, beams, fov, 30, 0.03, rng));
+      const auto [ref, cur, motion] = randomScanPair(world, fov_deg, beams, rng);
       const double seg = trial % 2 ? 0.0 : 0.2;
       const ReferenceIndex index(ref, seg);
       SearchMemory memory;
