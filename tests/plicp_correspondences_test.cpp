@@ -108,8 +108,8 @@ TEST(PlicpCorrespondences, JumpTablesPointAtTheNextLongerAndShorterRay)
 
 TEST(PlicpOutliers, KeepsOnlyTheNearestMatchPerReferencePoint)
 {
-  std::vector<Correspondence> in = {{0, 5, 6, 0.3}, {1, 5, 4, 0.1}, {2, 7, 8, 0.2}, {3, 5, 6, 0.2}};
-  const auto out = keepNearestPerReference(in, 10);
+  std::vector<Correspondence> out = {{0, 5, 6, 0.3}, {1, 5, 4, 0.1}, {2, 7, 8, 0.2}, {3, 5, 6, 0.2}};
+  keepNearestPerReference(out, 10);
   ASSERT_EQ(out.size(), 2u);
   EXPECT_EQ(out[0].i, 1);
   EXPECT_EQ(out[1].i, 2);
@@ -124,11 +124,21 @@ TEST(PlicpOutliers, TrimsTheWorstFractionAndAdaptiveOutliers)
     in.push_back({k, k, k + 1, 0});
     err.push_back(k < 95 ? 0.01 * (1 + k % 5) : 10.0);  // 5 gross outliers
   }
-  const auto kept = trimByError(in, err, 0.99, 0.7, 3.0);
+  auto kept = in;
+  auto kept_err = err;
+  trimByError(kept, kept_err, 0.99, 0.7, 3.0);
   EXPECT_EQ(kept.size(), 95u);
-  for (const auto& c : kept) EXPECT_LT(c.i, 95);
+  ASSERT_EQ(kept_err.size(), kept.size());
+  for (size_t k = 0; k < kept.size(); k++)
+  {
+    EXPECT_LT(kept[k].i, 95);
+    EXPECT_EQ(kept_err[k], err[kept[k].i]);  // errors stay aligned with their correspondences
+  }
   // Median of the 100 errors is 0.03; 19 of each of 0.01..0.05: 57 are <= 0.03.
-  EXPECT_EQ(trimByError(in, err, 0.5, 1.0, 100).size(), 57u);
+  kept = in;
+  kept_err = err;
+  trimByError(kept, kept_err, 0.5, 1.0, 100);
+  EXPECT_EQ(kept.size(), 57u);
 }
 
 TEST(PlicpCorrespondences, PseudoAngleIsMonotoneInTheAngle)

@@ -5,7 +5,7 @@
 
 namespace swslam::plicp
 {
-void keepNearestPerReferenceInPlace(std::vector<Correspondence>& cs, int ref_size)
+void keepNearestPerReference(std::vector<Correspondence>& cs, int ref_size)
 {
   // Index into `cs` of the nearest match of each j1 (per-thread buffer: no allocation per call).
   thread_local std::vector<int> owner;
@@ -22,16 +22,8 @@ void keepNearestPerReferenceInPlace(std::vector<Correspondence>& cs, int ref_siz
   cs.resize(w);
 }
 
-std::vector<Correspondence> keepNearestPerReference(const std::vector<Correspondence>& in,
-                                                    int ref_size)
-{
-  std::vector<Correspondence> out = in;
-  keepNearestPerReferenceInPlace(out, ref_size);
-  return out;
-}
-
-void trimByErrorInPlace(std::vector<Correspondence>& cs, std::vector<double>& errors,
-                        double keep_fraction, double adaptive_quantile, double adaptive_mult)
+void trimByError(std::vector<Correspondence>& cs, std::vector<double>& errors,
+                 double keep_fraction, double adaptive_quantile, double adaptive_mult)
 {
   if (cs.empty())
   {
@@ -60,16 +52,6 @@ void trimByErrorInPlace(std::vector<Correspondence>& cs, std::vector<double>& er
     }
   cs.resize(w);
   errors.resize(w);
-}
-
-std::vector<Correspondence> trimByError(const std::vector<Correspondence>& in,
-                                        const std::vector<double>& errors, double keep_fraction,
-                                        double adaptive_quantile, double adaptive_mult)
-{
-  std::vector<Correspondence> out = in;
-  std::vector<double> e = errors;
-  trimByErrorInPlace(out, e, keep_fraction, adaptive_quantile, adaptive_mult);
-  return out;
 }
 
 }  // namespace swslam::plicp

@@ -36,15 +36,22 @@ std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2
   return e;
 }
 
+void lineErrorsInto(const ReferenceScan& reference, const std::vector<Eigen::Vector2d>& cur_in_ref,
+                    const std::vector<Correspondence>& cs, std::vector<double>& out)
+{
+  const Scan& ref = reference.scan;
+  out.resize(cs.size());
+  for (size_t k = 0; k < cs.size(); k++)
+    out[k] = std::abs(correspondenceNormal(ref, reference.index, cs[k])
+                          .dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
+}
+
 std::vector<double> lineErrors(const ReferenceScan& reference,
                                const std::vector<Eigen::Vector2d>& cur_in_ref,
                                const std::vector<Correspondence>& cs)
 {
-  const Scan& ref = reference.scan;
-  std::vector<double> e(cs.size());
-  for (size_t k = 0; k < cs.size(); k++)
-    e[k] = std::abs(correspondenceNormal(ref, reference.index, cs[k])
-                        .dot(cur_in_ref[cs[k].i] - ref.points[cs[k].j1]));
+  std::vector<double> e;
+  lineErrorsInto(reference, cur_in_ref, cs, e);
   return e;
 }
 
@@ -59,15 +66,10 @@ std::vector<Correspondence> rejectOutliers(const ReferenceScan& reference,
                                            const PlicpParams& params)
 {
   if (params.remove_doubles && radius <= params.max_correspondence_dist)
-    keepNearestPerReferenceInPlace(found, static_cast<int>(reference.scan.size()));
+    keepNearestPerReference(found, static_cast<int>(reference.scan.size()));
   thread_local std::vector<double> errors;  // per-thread buffer: no allocation per call
-  const Scan& ref = reference.scan;
-  errors.resize(found.size());
-  for (size_t k = 0; k < found.size(); k++)
-    errors[k] = std::abs(correspondenceNormal(ref, reference.index, found[k])
-                             .dot(cur_in_ref[found[k].i] - ref.points[found[k].j1]));
-  trimByErrorInPlace(found, errors, params.trim_keep_fraction, params.adaptive_quantile,
-                     params.adaptive_mult);
+  lineErrorsInto(reference, cur_in_ref, found, errors);
+  trimByError(found, errors, params.trim_keep_fraction, params.adaptive_quantile, params.adaptive_mult);
   return found;
 }
 

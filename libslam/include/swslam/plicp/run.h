@@ -32,6 +32,9 @@ std::vector<double> lineErrors(const Scan& ref, const std::vector<Eigen::Vector2
 std::vector<double> lineErrors(const ReferenceScan& reference,
                                const std::vector<Eigen::Vector2d>& cur_in_ref,
                                const std::vector<Correspondence>& cs);
+/** The same into `out` (resized; reuses its storage). */
+void lineErrorsInto(const ReferenceScan& reference, const std::vector<Eigen::Vector2d>& cur_in_ref,
+                    const std::vector<Correspondence>& cs, std::vector<double>& out);
 
 /** PLICP from the guess x0 (coarse start if the guess is poor); if it ends with few inliers,
  * also from the guess turned by +-1..retry_rotations steps, keeping a retry only if it has
