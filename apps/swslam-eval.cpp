@@ -1,9 +1,12 @@
 // swslam-eval: trajectory accuracy. See doc/evaluation.md.
 //   swslam-eval ate EST.tum GT.tum        ATE after SE(2) alignment, RPE per pose and per metre
 //   swslam-eval relations EST.tum F.relations   Kuemmerle et al. relation-based metric
+//   swslam-eval consistency EST.tum LOG [--compare OTHER.tum]...   scans' agreement, no truth
 
 #include "cli.h"
+#include <swslam/eval/consistency.h>
 #include <swslam/eval/report.h>
+#include <swslam/system_config.h>
 
 #include <iostream>
 
@@ -11,27 +14,63 @@ int main(int argc, char** argv)
 {
   try
   {
-    TCLAP::CmdLine cmd("swslam-eval: trajectory accuracy (ATE, RPE, Kuemmerle relations)", ' ',
-                       "0.1");
-    std::vector<std::string> commands{"ate", "relations"};
+    TCLAP::CmdLine cmd("swslam-eval: trajectory accuracy (ATE, RPE, Kuemmerle relations) and the "
+                       "scans' self-consistency at a trajectory's poses", ' ', "0.1");
+    std::vector<std::string> commands{"ate", "relations", "consistency"};
     TCLAP::ValuesConstraint<std::string> allowed(commands);
-    TCLAP::UnlabeledValueArg<std::string> command("command", "ate | relations", true, "",
+    TCLAP::UnlabeledValueArg<std::string> command("command", "ate | relations | consistency", true, "",
                                                   &allowed, cmd);
     TCLAP::UnlabeledValueArg<std::string> est("estimate", "Estimated trajectory (TUM)", true,
                                               "", "EST.tum", cmd);
     TCLAP::UnlabeledValueArg<std::string> reference(
-        "reference", "Ground truth (TUM) for 'ate', relations file for 'relations'", true, "",
-        "GT.tum|FILE.relations", cmd);
+        "reference", "Ground truth (TUM) for 'ate', relations file for 'relations', the log "
+        "(rawlog or CARMEN) for 'consistency'", true, "", "GT.tum|FILE.relations|LOG", cmd);
     TCLAP::ValueArg<double> max_dt("", "max-dt", "Timestamp association tolerance (default 0.01)",
                                    false, 0.01, "seconds", cmd);
     TCLAP::ValueArg<double> segment("", "segment", "RPE segment length along the ground truth"
                                     " (default 1)", false, 1.0, "metres", cmd);
+    TCLAP::MultiArg<std::string> compare("", "compare", "consistency: also score this trajectory "
+                                         "on the same pairs (repeatable)", false, "OTHER.tum", cmd);
+    TCLAP::ValueArg<double> radius("", "radius", "consistency: pairs of scans this close on the "
+                                   "estimate (default 3)", false, 3.0, "metres", cmd);
+    TCLAP::ValueArg<size_t> min_gap("", "min-gap", "consistency: pairs at least this many scans "
+                                    "apart (default 1)", false, 1, "scans", cmd);
+    TCLAP::ValueArg<size_t> revisit_gap("", "revisit-gap", "consistency: pairs this many scans "
+                                        "apart are revisits (default 30)", false, 30, "scans", cmd);
+    TCLAP::ValueArg<std::string> config("c", "config", "consistency: the run's configuration "
+                                        "([carmen], [tracking] min_range, [plicp] "
+                                        "min_segment_length)", false, "", "INI", cmd);
+    TCLAP::ValueArg<size_t> stride("", "stride", "consistency: every K-th scan (default 1)", false,
+                                   1, "K", cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     if (!(max_dt.getValue() >= 0)) throw std::runtime_error("--max-dt must be >= 0");
     if (!(segment.getValue() > 0)) throw std::runtime_error("--segment must be > 0");
 
     const auto estimate = swslam::eval::readNonEmptyTum(est.getValue());
-    if (command.getValue() == "ate")
+    if (command.getValue() == "consistency")
+    {
+      if (!(radius.getValue() > 0)) throw std::runtime_error("--radius must be > 0");
+      if (config.getValue().empty())
+        throw std::runtime_error("consistency needs --config: the run's configuration says how "
+                                 "the log is read");
+      const auto params = swslam::loadSystemParams(config.getValue());
+      std::vector<std::string> names{est.getValue()};
+      std::vector<std::vector<swslam::StampedPose>> trajectories{estimate};
+      for (const auto& other : compare.getValue())
+      {
+        names.push_back(other);
+        trajectories.push_back(swslam::eval::readNonEmptyTum(other));
+      }
+      swslam::eval::ConsistencyOptions options;
+      options.radius = radius.getValue();
+      options.min_gap = min_gap.getValue();
+      options.revisit_gap = revisit_gap.getValue();
+      options.min_segment = params.plicp.min_segment_length;
+      std::cout << swslam::eval::consistencyReport(reference.getValue(), names, trajectories, options,
+                                                   max_dt.getValue(), stride.getValue(),
+                                                   params.tracking.min_range, params.carmen);
+    }
+    else if (command.getValue() == "ate")
     {
       const auto truth = swslam::eval::readNonEmptyTum(reference.getValue());
       std::cout << swslam::eval::formatTrajectoryEvaluation(swslam::eval::evaluateTrajectory(

@@ -4,7 +4,8 @@
 #     throughput against real time, peak memory;
 #  2. valley threaded: each module's max time, apart from full optimizations after loops;
 #  3. valley over 10 noise seeds: ATE mean and std;
-#  4. the corrected CARMEN logs laser-only, and the open-water scenario;
+#  4. the corrected CARMEN logs laser-only (ATE; and the scans' agreement at swslam's poses
+#     and at the reference poses, swslam-eval consistency), and the open-water scenario;
 #  5. MRPT's Telecom Faculty one-loop rawlog: the map before and after its loop closes;
 #  6. MRPT's icp-slam on the valley rawlog: time and ATE.
 # Usage: scripts/bench-valley.sh [CARMEN_DIR]   (default ../shared/datasets); writes out/bench-valley/
@@ -61,6 +62,9 @@ for log in "$carmen_dir"/*-corrected.log.gz; do
   "$bin/swslam" -c $cfg -i "$log" -g "$out/$name.gt.tum" -o "$out/$name" -d -q --no-odometry \
     --no-render > /dev/null 2>&1 || true
   echo "$name: ATE $(field 'ATE (rmse)' "$out/$name/summary.md"), nodes $(field 'Number of graph nodes' "$out/$name/summary.md"), constraints (loops) $(field 'Number of graph constraints' "$out/$name/summary.md")"
+  # How well the scans agree at swslam's poses and at the reference poses (doc/evaluation.md).
+  "$bin/swslam-eval" consistency "$out/$name.gt.tum" "$log" -c $cfg \
+    --compare "$out/$name/trajectory.tum" 2> /dev/null | grep '^#' | sed "s|$out/||; s|^# |  consistency |" || true
 done
 "$bin/swslam" -c $cfg -i datasets/open-water/open-water.rawlog -g datasets/open-water/open-water.gt.tum \
   -o "$out/open-water" -d -q --no-render > /dev/null 2>&1

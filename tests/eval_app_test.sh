@@ -50,7 +50,21 @@ awk -v sigma=0.02 -v seed=4 -f "$SRC/scripts/perturb-tum.awk" "$DIR/gt.tum" > "$
   || fail "relations on noisy copy"
 awk -v v="$(value trans_abs_mean "$DIR/d.txt")" 'BEGIN { exit !(v > 0.01) }' || fail "noise unseen"
 
-# 4. Bad input: a clear message and exit code 1.
+# 4. Consistency of the bundled lake-short scans: at the true poses the scans agree far better
+#    than at poses with 5 cm / 1 deg of noise, scored on the same pairs.
+LOG="$SRC/datasets/lake-short/lake-short.rawlog"
+awk -v sigma=0.05 -v seed=4 -f "$SRC/scripts/perturb-tum.awk" \
+  "$SRC/datasets/lake-short/lake-short.gt.tum" > "$DIR/lake-noisy.tum"
+"$BIN" consistency "$SRC/datasets/lake-short/lake-short.gt.tum" "$LOG" -c "$SRC/config/default.ini" \
+  --compare "$DIR/lake-noisy.tum" --stride 10 > "$DIR/e.txt" 2> /dev/null || fail "consistency"
+cat "$DIR/e.txt"
+nth() { grep "^$1=" "$3" | sed -n "$2p" | cut -d= -f2; }  # KEY N FILE: the N-th trajectory's value
+[ "$(value scans "$DIR/e.txt")" = 247 ] || fail "consistency scans (every 10th of 2461)"
+[ "$(nth all_pairs 1 "$DIR/e.txt")" = "$(nth all_pairs 2 "$DIR/e.txt")" ] || fail "same pairs"
+awk -v t="$(nth all_frac_good 1 "$DIR/e.txt")" -v n="$(nth all_frac_good 2 "$DIR/e.txt")" \
+  'BEGIN { exit !(t > 0.5 && n < t - 0.2) }' || fail "noisy poses not told from true ones"
+
+# 5. Bad input: a clear message and exit code 1.
 expect_error() {  # PATTERN ARGS...
   local pattern="$1"; shift
   local rc=0
@@ -69,4 +83,7 @@ expect_error "associate within" ate "$DIR/late.tum" "$DIR/gt.tum"
 expect_error "no relation has both stamps" relations "$DIR/late.tum" "$DIR/gt.relations"
 expect_error "max-dt" ate "$DIR/gt.tum" "$DIR/gt.tum" --max-dt -1
 expect_error "" nonsense "$DIR/gt.tum" "$DIR/gt.tum"
+expect_error "needs --config" consistency "$DIR/gt.tum" "$LOG"
+expect_error "have a pose within" consistency "$DIR/gt.tum" "$LOG" -c "$SRC/config/default.ini"
+expect_error "cannot" consistency "$DIR/gt.tum" "$DIR/missing.rawlog" -c "$SRC/config/default.ini"
 echo "eval_app_test: OK"

@@ -1,0 +1,103 @@
+// The scans' self-consistency at a trajectory's poses (swslam-eval consistency).
+#include "test_support.h"
+
+#include <swslam/eval/consistency.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace swslam;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** 16 scans of the room along a closed loop (a revisit of the start at the end). */
+struct RoomLoop
+{
+  std::vector<Scan> scans;
+  std::vector<CPose2D> poses;
+  RoomLoop()
+  {
+    const auto world = test::roomWorld();
+    std::mt19937 rng(3);
+    for (int k = 0; k < 16; k++)
+    {
+      const double a = 2 * M_PI * k / 16;
+      poses.emplace_back(3 * std::cos(a) - 1, 2 * std::sin(a), a + M_PI / 2);
+      scans.push_back(scanFromObservation(
+          test::simulateObservation(world, poses.back(), 361, M_PI, 30, 0.005, rng)));
+    }
+  }
+};
+}  // namespace
+
+TEST(EvalConsistency, NearbyPairsKeepCloseAndDistantEnoughScans)
+{
+  const std::vector<CPose2D> poses{{0, 0, 0}, {1, 0, 0}, {2.5, 0, 0}, {0, 0.5, 1}, {10, 0, 0}};
+  using Pairs = std::vector<std::pair<size_t, size_t>>;
+  EXPECT_EQ(eval::nearbyPairs(poses, 1.6, 1), (Pairs{{0, 1}, {0, 3}, {1, 2}, {1, 3}}));
+  EXPECT_EQ(eval::nearbyPairs(poses, 1.6, 2), (Pairs{{0, 3}, {1, 3}}));
+  EXPECT_EQ(eval::nearbyPairs(poses, 1.6, 0), eval::nearbyPairs(poses, 1.6, 1));  // never (i, i)
+  EXPECT_TRUE(eval::nearbyPairs(poses, 0.1, 1).empty());
+}
+
+TEST(EvalConsistency, TruePosesAgreeAndOneWrongPoseShows)
+{
+  const RoomLoop room;
+  eval::ConsistencyOptions o;
+  o.radius = 4;
+  o.revisit_gap = 8;
+  const auto pairs = eval::nearbyPairs(room.poses, o.radius, o.min_gap);
+  ASSERT_GT(pairs.size(), 20u);
+  const auto truth = eval::scanConsistency(room.scans, room.poses, pairs, o);
+  EXPECT_EQ(truth.all.pairs, pairs.size());
+  EXPECT_GT(truth.all.points, 100 * pairs.size());
+  EXPECT_LT(truth.all.median, 0.01);  // range noise 5 mm
+  EXPECT_GT(truth.all.fractionGood(), 0.95);
+  EXPECT_LT(truth.all.rms_capped, 0.03);
+
+  // Revisits: exactly the pairs at least revisit_gap scans apart.
+  size_t far = 0;
+  for (const auto& [i, j] : pairs) far += j - i >= o.revisit_gap;
+  ASSERT_GT(far, 0u);
+  EXPECT_EQ(truth.revisits.pairs, far);
+
+  // One scan placed 0.25 m and 3 deg off: its pairs disagree.
+  auto wrong = room.poses;
+  wrong[5] = wrong[5] + CPose2D(0.25, 0, 3 * M_PI / 180);
+  const auto bad = eval::scanConsistency(room.scans, wrong, pairs, o);
+  EXPECT_LT(bad.all.fractionGood(), truth.all.fractionGood() - 0.05);
+  EXPECT_GT(bad.all.rms_capped, truth.all.rms_capped + 0.01);
+}
+
+TEST(EvalConsistency, OnlyRelativePosesMatter)
+{
+  const RoomLoop room;
+  eval::ConsistencyOptions o;
+  const auto pairs = eval::nearbyPairs(room.poses, o.radius, o.min_gap);
+  const CPose2D frame(12, -7, 2.0);  // the whole trajectory in another frame
+  std::vector<CPose2D> moved;
+  for (const auto& p : room.poses) moved.push_back(frame + p);
+  EXPECT_EQ(eval::nearbyPairs(moved, o.radius, o.min_gap), pairs);
+  const auto a = eval::scanConsistency(room.scans, room.poses, pairs, o);
+  const auto b = eval::scanConsistency(room.scans, moved, pairs, o);
+  EXPECT_EQ(a.all.points, b.all.points);
+  EXPECT_NEAR(a.all.rms_capped, b.all.rms_capped, 1e-9);
+  EXPECT_NEAR(a.all.median, b.all.median, 1e-9);
+}
+
+TEST(EvalConsistency, MismatchedInputIsAnError)
+{
+  const RoomLoop room;
+  eval::ConsistencyOptions o;
+  auto fewer = room.poses;
+  fewer.pop_back();
+  EXPECT_THROW(eval::scanConsistency(room.scans, fewer, {{0, 1}}, o), std::invalid_argument);
+  EXPECT_THROW(eval::scanConsistency(room.scans, room.poses, {{0, 99}}, o), std::invalid_argument);
+  // No pairs: nothing to score, reported as NaN rather than as perfect agreement.
+  const auto none = eval::scanConsistency(room.scans, room.poses, {}, o);
+  EXPECT_EQ(none.all.points, 0u);
+  EXPECT_TRUE(std::isnan(none.all.median));
+  EXPECT_TRUE(std::isnan(none.all.fractionGood()));
+}
