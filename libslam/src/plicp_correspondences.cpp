@@ -24,11 +24,26 @@ bool better(double d2, int k, double best_d2, int best_k)
  * the squared distance of every ray the walk covers except the best one: the distances it
  * computed, and the bounds that let it stop or jump. */
 void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, double P,
-          double p_pseudo, int start, int step, double& best_d2, int& best_k, double& others_d2)
+          double p_pseudo, int start, int step, double& best_d2_io, int& best_k_io,
+          double& others_d2_io)
 {
+  // Locals and raw pointers: the results live in registers during the walk (through the
+  // references, every update would be a store the next comparison has to wait for).
+  double best_d2 = best_d2_io, others_d2 = others_d2_io;
+  int best_k = best_k_io;
   const int n = static_cast<int>(ref.size());
-  const auto& bigger = step > 0 ? idx.up_bigger : idx.down_bigger;
-  const auto& smaller = step > 0 ? idx.up_smaller : idx.down_smaller;
+  const int* bigger = (step > 0 ? idx.up_bigger : idx.down_bigger).data();
+  const int* smaller = (step > 0 ? idx.up_smaller : idx.down_smaller).data();
+  const double* pseudo = idx.pseudo.data();
+  const double* ranges = ref.ranges.data();
+  const Eigen::Vector2d* dirs = idx.dirs.data();
+  const Eigen::Vector2d* points = ref.points.data();
+  const double px = p.x(), py = p.y();
+  const auto done = [&]() {
+    best_d2_io = best_d2;
+    best_k_io = best_k;
+    others_d2_io = others_d2;
+  };
   bool wrapped = false;
   int k = start;
   for (int guard = 0; guard <= 2 * n; guard++)
@@ -37,24 +52,25 @@ void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, 
     {
       // Walks wrap around even on partial scans: across the blind sector, rays at the other
       // end of the scan can be the nearest ones.
-      if (wrapped) return;
+      if (wrapped) return done();
       wrapped = true;
       k = k < 0 ? n - 1 : 0;
     }
     // Offset in pseudo-angle units (2 = half a turn), growing along the walk.
-    const double offset = step * (idx.pseudo[k] - p_pseudo) + (wrapped ? 4.0 : 0.0);
-    if (offset > 2.0) return;  // past half a turn: the other walk covers the rest
+    const double offset = step * (pseudo[k] - p_pseudo) + (wrapped ? 4.0 : 0.0);
+    if (offset > 2.0) return done();  // past half a turn: the other walk covers the rest
     // Distance from p to the ray of bearing offset delta is at least P sin(delta) for delta
     // below 90 deg and at least P beyond it.
-    const Eigen::Vector2d& u = idx.dirs[k];
-    const double along = u.dot(p), across = step * (u.y() * p.x() - u.x() * p.y());
+    const double ux = dirs[k].x(), uy = dirs[k].y();
+    const double along = ux * px + uy * py, across = step * (uy * px - ux * py);
     const double bound = along >= 0 ? across : P;
     if (bound > 0 && bound * bound > best_d2)
     {
       others_d2 = std::min(others_d2, bound * bound);
-      return;
+      return done();
     }
-    const double d2 = (ref.points[k] - p).squaredNorm();
+    const double dx = points[k].x() - px, dy = points[k].y() - py;
+    const double d2 = dx * dx + dy * dy;
     if (better(d2, k, best_d2, best_k))
     {
       if (best_k != kNone) others_d2 = std::min(others_d2, best_d2);
@@ -65,7 +81,7 @@ void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, 
       others_d2 = std::min(others_d2, d2);
     // Rays up to the next longer (shorter) one are no farther (nearer) from the origin than
     // ray k, so their distance to p is at least |P - r_k|: skip them when that beats nothing.
-    const double gap = P - ref.ranges[k];
+    const double gap = P - ranges[k];
     int next = k + step;
     if (gap * gap > best_d2)
     {
@@ -75,6 +91,7 @@ void walk(const Scan& ref, const ReferenceIndex& idx, const Eigen::Vector2d& p, 
     k = next;
   }
   others_d2 = 0;  // not reached (the walk ends within two turns); proves nothing
+  done();
 }
 }  // namespace
 
