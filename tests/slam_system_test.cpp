@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "test_support.h"
 
@@ -40,6 +41,26 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanAt(const test::World& world, const C
       test::simulateObservation(world, pose, 541, 1.5 * M_PI, 30, 0.01, rng));
   obs->timestamp = mrpt::Clock::fromDouble(t);
   return obs;
+}
+
+/** Drives a 7 m radius circle on the water between the two banks of a cluttered scene, a bit
+ * more than once round, deterministically; `truth` gets the true poses. */
+RunResults runCircuit(const SystemParams& p, std::vector<StampedPose>& truth)
+{
+  SlamSystem slam(p, RunMode::Deterministic);
+  test::World world = test::clutteredWorld(7);
+  std::mt19937 rng(8);
+  const double r = 7, speed = 1.5, dt = 0.05;
+  const int n = static_cast<int>(2 * M_PI * r / (speed * dt)) + 40;
+  for (int k = 0; k < n; k++)
+  {
+    const double a = speed * dt * k / r;
+    const CPose2D pose(r * std::sin(a), -10 + r - r * std::cos(a), a);
+    truth.push_back({dt * k, pose});
+    EXPECT_TRUE(slam.feed({scanAt(world, pose, dt * k, rng), {}}).ok());
+  }
+  slam.finish();
+  return slam.results();
 }
 }  // namespace
 
@@ -148,21 +169,8 @@ TEST(SlamSystem, ClosesALoopAroundACircuit)
   // A 7 m radius circle on the water between the two banks of a cluttered scene: returning
   // to the start must add verified loop edges, and the trajectory stays on the circle.
   SystemParams p = defaultParams();
-  SlamSystem slam(p, RunMode::Deterministic);
-  test::World world = test::clutteredWorld(7);
-  std::mt19937 rng(8);
-  const double r = 7, speed = 1.5, dt = 0.05;
-  const int n = static_cast<int>(2 * M_PI * r / (speed * dt)) + 40;
   std::vector<StampedPose> truth;
-  for (int k = 0; k < n; k++)
-  {
-    const double a = speed * dt * k / r;
-    const CPose2D pose(r * std::sin(a), -10 + r - r * std::cos(a), a);
-    truth.push_back({dt * k, pose});
-    ASSERT_TRUE(slam.feed({scanAt(world, pose, dt * k, rng), {}}).ok());
-  }
-  slam.finish();
-  const RunResults res = slam.results();
+  const RunResults res = runCircuit(p, truth);
   EXPECT_GT(res.loops, 0u);
   size_t loop_edges = 0;
   for (size_t i = 0; i < res.graph.edgeCount(); i++) loop_edges += res.graph.edge(i).kind == EdgeKind::Loop;
@@ -191,4 +199,35 @@ TEST(SlamSystem, ClosesALoopAroundACircuit)
     EXPECT_TRUE(std::any_of(full_nodes.begin(), full_nodes.end(),
                             [&](size_t f) { return f >= l && f <= l + interval; }))
         << "loop at node " << l;
+}
+
+TEST(SlamSystem, FinalRefinementLinksCloseUnlinkedNodesOfTheCircuit)
+{
+  // Off (the default): every loop edge is one the loop closer counted. On: the pass adds loop
+  // edges between close nodes that shared none, the map follows, and the circle stays right.
+  SystemParams p = defaultParams();
+  ASSERT_FALSE(p.final_refinement.enabled);
+  p.final_refinement.enabled = true;
+  std::vector<StampedPose> truth;
+  const RunResults res = runCircuit(p, truth);
+  size_t loop_edges = 0;
+  std::set<std::pair<size_t, size_t>> pairs;
+  for (size_t i = 0; i < res.graph.edgeCount(); i++)
+  {
+    const auto& e = res.graph.edge(i);
+    loop_edges += e.kind == EdgeKind::Loop;
+    EXPECT_TRUE(pairs.insert({std::min(e.from, e.to), std::max(e.from, e.to)}).second)
+        << "pair " << e.from << "-" << e.to << " linked twice";
+  }
+  EXPECT_GT(loop_edges, res.loops);
+  EXPECT_LT(eval::evaluateTrajectory(res.trajectory, truth, 0.001).ate.position.rmse, 0.1);
+  // The refinement's edges close no pair farther apart than the radius (with some slack for
+  // the optimization that followed).
+  for (size_t i = 0; i < res.graph.edgeCount(); i++)
+  {
+    const auto& e = res.graph.edge(i);
+    if (e.kind != EdgeKind::Loop) continue;
+    const double d = (res.graph.pose(e.from).translation() - res.graph.pose(e.to).translation()).norm();
+    EXPECT_LT(d, p.loop_closure.max_distance + 0.5);
+  }
 }

@@ -1,5 +1,6 @@
 #include "swslam/system/graph_module.h"
 
+#include "swslam/loop/final_refinement.h"
 #include "swslam/sliding_window.h"
 
 #include <mrpt/system/CTimeLogger.h>
@@ -124,6 +125,35 @@ GraphStep GraphModule::optimizeAll(size_t scan)
   if (nodes_.empty()) return step;
   schedule_.ranFull(nodes_.size() - 1);
   optimize(true, step);
+  return step;
+}
+
+GraphStep GraphModule::refineAll(size_t scan, const FinalRefinementParams& p)
+{
+  GraphStep step;
+  step.scan = scan;
+  if (!p.enabled || nodes_.empty()) return step;
+  for (int pass = 0; pass < p.passes; ++pass)
+  {
+    const auto checks = refinementChecks(
+        graph_, [this](size_t n) { return nodes_.at(n); }, p, plicp_params_);
+    size_t added = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (const LoopCheck& check : checks)
+      {
+        if (!check.edge) continue;
+        const size_t before = step.edges_rejected;
+        addEdge(*check.edge, step);
+        added += step.edges_rejected == before;
+      }
+    }
+    step.pairs_refined += checks.size();
+    step.refinement_edges += added;
+    if (added == 0) break;
+    schedule_.ranFull(nodes_.size() - 1);
+    optimize(true, step);
+  }
   return step;
 }
 

@@ -241,6 +241,26 @@ void SlamSystem::mapLoop()
   }
 }
 
+void SlamSystem::finalGraphStep(const char* module, const std::function<GraphStep(size_t)>& run)
+{
+  if (!error().empty()) return;
+  try
+  {
+    size_t last_scan = 0;
+    {
+      std::lock_guard<std::mutex> lock(results_mutex_);
+      last_scan = stats_.empty() ? 0 : stats_.size() - 1;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const GraphStep step = run(last_scan);
+    applyGraphStep(step, secondsSince(t0));
+  }
+  catch (const std::exception& e)
+  {
+    fail(module, e.what());
+  }
+}
+
 void SlamSystem::finish()
 {
   if (finished_) return;
@@ -251,24 +271,12 @@ void SlamSystem::finish()
     if (tracking_thread_.joinable()) tracking_thread_.join();  // closes node_queue_
     if (graph_thread_.joinable()) graph_thread_.join();
   }
-  if (params_.system.final_full_optimization && error().empty())
-  {
-    try
-    {
-      size_t last_scan = 0;
-      {
-        std::lock_guard<std::mutex> lock(results_mutex_);
-        last_scan = stats_.empty() ? 0 : stats_.size() - 1;
-      }
-      const auto t0 = std::chrono::steady_clock::now();
-      const GraphStep step = graph_.optimizeAll(last_scan);
-      applyGraphStep(step, secondsSince(t0));
-    }
-    catch (const std::exception& e)
-    {
-      fail("final optimization", e.what());
-    }
-  }
+  if (params_.system.final_full_optimization)
+    finalGraphStep("final optimization", [this](size_t scan) { return graph_.optimizeAll(scan); });
+  if (params_.final_refinement.enabled)
+    finalGraphStep("final refinement", [this](size_t scan) {
+      return graph_.refineAll(scan, params_.final_refinement);
+    });
   if (mode_ == RunMode::Threaded)
   {
     map_queue_.close();

@@ -21,6 +21,7 @@ std::vector<std::pair<std::string, Options*>> modulesOf(Params& p)
           {"carmen", &p.carmen},
           {"graph_optimizer", &p.graph_optimizer},
           {"loop_closure", &p.loop_closure},
+          {"final_refinement", &p.final_refinement},
           {"map", &p.map},
           {"system", &p.system}};
 }

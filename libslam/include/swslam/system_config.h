@@ -5,6 +5,7 @@
 #include <swslam/carmen_log.h>
 #include <swslam/correlative/correlative_params.h>
 #include <swslam/graph_optimizer_params.h>
+#include <swslam/loop/final_refinement_params.h>
 #include <swslam/loop/loop_closure_params.h>
 #include <swslam/map/map_params.h>
 #include <swslam/plicp/plicp.h>
@@ -27,6 +28,7 @@ struct SystemParams
   CarmenParams carmen;  ///< [carmen]
   GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
   LoopClosureParams loop_closure;  ///< [loop_closure]
+  FinalRefinementParams final_refinement;  ///< [final_refinement]
   MapParams map;        ///< [map]
   SystemOptions system;  ///< [system]
 

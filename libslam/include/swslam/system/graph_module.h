@@ -5,10 +5,11 @@
 // once per [graph_optimizer] full_optimization_interval nodes while loops keep coming).
 //
 // Threading: one thread (the graph thread, or the deterministic loop) calls addNode() and
-// optimizeAll(); graphCopy() and the counters may be called from any thread.
+// optimizeAll() and refineAll(); graphCopy() and the counters may be called from any thread.
 
 #include <swslam/graph_optimizer.h>
 #include <swslam/graph_optimizer_params.h>
+#include <swslam/loop/final_refinement_params.h>
 #include <swslam/loop/loop_closer.h>
 #include <swslam/loop/loop_corroboration.h>
 #include <swslam/pose_graph.h>
@@ -27,6 +28,7 @@ struct GraphStep
   size_t scan = 0;
   size_t node = 0;
   size_t loops_checked = 0, loops_accepted = 0;
+  size_t pairs_refined = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
   bool full = false;          ///< the whole graph was optimized
   OptimizationReport report;
@@ -50,6 +52,12 @@ class GraphModule
 
   /** Optimizes the whole graph (e.g. at the end of a run). */
   GraphStep optimizeAll(size_t scan);
+
+  /** The final refinement (loop/final_refinement.h), `p.passes` rounds: matches every close
+   * pair of nodes that shares no edge, adds the accepted matches as loop edges and, if any,
+   * optimizes the whole graph. A round that adds no edge ends the pass early. The step's poses
+   * are those of the last optimization (none when no edge was added). */
+  GraphStep refineAll(size_t scan, const FinalRefinementParams& p);
 
   PoseGraph graphCopy() const;
   size_t loopCount() const;

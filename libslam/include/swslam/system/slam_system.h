@@ -21,6 +21,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -82,8 +83,8 @@ class SlamSystem
   /** Processes one scan (threaded: queues it, waiting while the queue is full). */
   FeedResult feed(ScanInput input);
 
-  /** No more input: drains every queue, runs the final full optimization (if configured),
-   * joins the threads. Idempotent. */
+  /** No more input: drains every queue, runs the final full optimization and the final
+   * refinement (each if configured), joins the threads. Idempotent. */
   void finish();
 
   /** Empty unless a module failed. */
@@ -107,6 +108,9 @@ class SlamSystem
   void graphOne(const NewNode& node);
   void mapOne(const MapMessage& message);
   void applyGraphStep(const GraphStep& step, double seconds);
+  /** After the input ended (graph thread joined): `run(last scan index)` on this thread,
+   * then its poses to tracking's mailbox and the map; a throw fails `module`. */
+  void finalGraphStep(const char* module, const std::function<GraphStep(size_t)>& run);
   void trackingLoop();
   void graphLoop();
   void mapLoop();
