@@ -9,7 +9,7 @@ namespace swslam
 {
 struct FinalRefinementParams : public mrpt::config::CLoadableOptions
 {
-  bool enabled = false;  ///< once the input ends, match every close unlinked pair of nodes
+  bool enabled = true;   ///< once the input ends, match every close unlinked pair of nodes
   int passes = 1;        ///< rounds of (match the pairs, add the accepted edges, optimize all)
   double radius = 3.0;   ///< [m] pairs whose optimized (vehicle) poses are at most this far apart
 
