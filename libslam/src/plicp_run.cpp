@@ -86,16 +86,17 @@ bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& 
 /** Iterates from run.x with matching radius `radius`, halving it each time the estimate
  * settles, until it settles at max_correspondence_dist (Converged) or max_iterations. Fails
  * with TooFewCorrespondences or Diverged (run.message says why). `first`, if not empty, is
- * the correspondence set at run.x and `radius`, already searched. */
+ * the correspondence set at run.x and `radius`, already searched. `memory`: what the searches
+ * of this run proved so far (points that moved little are not searched again). */
 void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
-             const PlicpParams& params, IcpRun& run, std::vector<Correspondence> first)
+             const PlicpParams& params, IcpRun& run, std::vector<Correspondence> first,
+             SearchMemory& memory)
 {
   const Scan& ref = reference.scan;
   const size_t min_n = static_cast<size_t>(params.min_correspondences);
   std::vector<Correspondence> previous, before_previous;
   std::vector<Eigen::Vector2d> cur_in_ref;  // buffers reused over the iterations
   std::vector<PointToLine> terms;
-  SearchMemory memory;  // points that moved little are not searched again
   auto settled = [&]() {
     if (radius <= params.max_correspondence_dist) return true;
     radius = std::max(params.max_correspondence_dist, 0.5 * radius);
@@ -151,13 +152,14 @@ void iterate(const ReferenceScan& reference, const Scan& cur, double radius,
 /** Coarse to fine: when the guess matches few points within the final radius, a wide radius
  * first widens the basin of convergence (it halves each time the estimate settles). Returns
  * the start radius; `probe` gets the correspondences at the final radius if they were searched
- * and the start is fine. */
+ * and the start is fine. The probe's search goes into `memory`, which the iterations reuse. */
 double startRadius(const ReferenceScan& reference, const Scan& cur, const Eigen::Vector3d& x,
-                   const PlicpParams& params, std::vector<Correspondence>& probe)
+                   const PlicpParams& params, std::vector<Correspondence>& probe,
+                   SearchMemory& memory)
 {
   const double fine = params.max_correspondence_dist;
   if (params.initial_correspondence_dist <= fine) return fine;
-  probe = findCorrespondences(reference.scan, reference.index, transformed(cur, x), fine);
+  probe = findCorrespondences(reference.scan, reference.index, transformed(cur, x), fine, memory);
   if (probe.size() >= params.coarse_start_fraction * cur.size()) return fine;
   probe.clear();
   return params.initial_correspondence_dist;
@@ -170,8 +172,9 @@ IcpRun runFrom(const ReferenceScan& reference, const Scan& cur, const Eigen::Vec
   IcpRun run;
   run.x = start;
   std::vector<Correspondence> probe;
-  const double radius = startRadius(reference, cur, start, params, probe);
-  iterate(reference, cur, radius, params, run, std::move(probe));
+  SearchMemory memory;
+  const double radius = startRadius(reference, cur, start, params, probe, memory);
+  iterate(reference, cur, radius, params, run, std::move(probe), memory);
   return run;
 }
 
