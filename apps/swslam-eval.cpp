@@ -33,15 +33,17 @@ int main(int argc, char** argv)
                                          "on the same pairs (repeatable)", false, "OTHER.tum", cmd);
     TCLAP::ValueArg<double> radius("", "radius", "consistency: pairs of scans this close on the "
                                    "estimate (default 3)", false, 3.0, "metres", cmd);
-    TCLAP::ValueArg<size_t> min_gap("", "min-gap", "consistency: pairs at least this many scans "
-                                    "apart (default 1)", false, 1, "scans", cmd);
-    TCLAP::ValueArg<size_t> revisit_gap("", "revisit-gap", "consistency: pairs this many scans "
-                                        "apart are revisits (default 30)", false, 30, "scans", cmd);
-    TCLAP::ValueArg<std::string> config("c", "config", "consistency: the run's configuration "
-                                        "([carmen], [tracking] min_range, [plicp] "
+    TCLAP::ValueArg<long> min_gap("", "min-gap", "consistency: pairs at least this many scored "
+                                  "scans apart (default 1)", false, 1, "scans", cmd);
+    TCLAP::ValueArg<long> revisit_gap("", "revisit-gap", "consistency: pairs this many scored scans "
+                                      "apart are revisits (default 30)", false, 30, "scans", cmd);
+    TCLAP::ValueArg<std::string> config("c", "config", "consistency (required): the run's "
+                                        "configuration ([carmen], [tracking] min_range, [plicp] "
                                         "min_segment_length)", false, "", "INI", cmd);
-    TCLAP::ValueArg<size_t> stride("", "stride", "consistency: every K-th scan (default 1)", false,
-                                   1, "K", cmd);
+    TCLAP::ValueArg<std::string> label("", "sensor-label", "consistency: the scans of this sensor "
+                                       "(default: the first seen)", false, "", "LABEL", cmd);
+    TCLAP::ValueArg<long> stride("", "stride", "consistency: every K-th scan (default 1)", false, 1,
+                                 "K", cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     if (!(max_dt.getValue() >= 0)) throw std::runtime_error("--max-dt must be >= 0");
     if (!(segment.getValue() > 0)) throw std::runtime_error("--segment must be > 0");
@@ -50,6 +52,8 @@ int main(int argc, char** argv)
     if (command.getValue() == "consistency")
     {
       if (!(radius.getValue() > 0)) throw std::runtime_error("--radius must be > 0");
+      if (min_gap.getValue() < 0 || revisit_gap.getValue() < 0 || stride.getValue() < 1)
+        throw std::runtime_error("--min-gap and --revisit-gap must be >= 0, --stride >= 1");
       if (config.getValue().empty())
         throw std::runtime_error("consistency needs --config: the run's configuration says how "
                                  "the log is read");
@@ -63,12 +67,14 @@ int main(int argc, char** argv)
       }
       swslam::eval::ConsistencyOptions options;
       options.radius = radius.getValue();
-      options.min_gap = min_gap.getValue();
-      options.revisit_gap = revisit_gap.getValue();
+      options.min_gap = static_cast<size_t>(min_gap.getValue());
+      options.revisit_gap = static_cast<size_t>(revisit_gap.getValue());
       options.min_segment = params.plicp.min_segment_length;
       std::cout << swslam::eval::consistencyReport(reference.getValue(), names, trajectories, options,
-                                                   max_dt.getValue(), stride.getValue(),
-                                                   params.tracking.min_range, params.carmen);
+                                                   max_dt.getValue(),
+                                                   static_cast<size_t>(stride.getValue()),
+                                                   params.tracking.min_range, params.carmen,
+                                                   label.getValue());
     }
     else if (command.getValue() == "ate")
     {

@@ -75,6 +75,10 @@ TEST(UnlinkedClosePairs, RespectRadiusAndExistingEdgesAtAnyIdGap)
   EXPECT_EQ(unlinkedClosePairs(g, 1.6),
             (std::vector<P>{{0, 100}, {1, 2}, {2, 3}, {2, 100}, {3, 4}, {4, 5}}));
   EXPECT_TRUE(unlinkedClosePairs(g, 0.5).empty());
+  // At most one partner per newer node, the nearest: node 100 keeps 0 (0.71 m), not 2 (1.58 m).
+  EXPECT_EQ(unlinkedClosePairs(g, 1.6, 1),
+            (std::vector<P>{{0, 100}, {1, 2}, {2, 3}, {3, 4}, {4, 5}}));
+  EXPECT_EQ(unlinkedClosePairs(g, 1.6, 0), unlinkedClosePairs(g, 1.6));
 }
 
 TEST(FinalRefinement, ARevisitGetsAnEdgeAndUnrelatedScansDoNot)

@@ -227,8 +227,9 @@ TEST(SlamSystem, FinalRefinementLinksCloseUnlinkedNodesOfTheCircuit)
   EXPECT_GT(res.loops, 0u);
   EXPECT_GT(loopEdges(res.graph), res.loops);
   EXPECT_LT(eval::evaluateTrajectory(res.trajectory, truth, 0.001).ate.position.rmse, 0.1);
-  // The refinement's edges close no pair farther apart than the radius (with some slack for
-  // the optimization that followed).
+  // Loop edges, the loop closer's and the refinement's (radius 3 m < max_distance), join no
+  // nodes farther apart than the loop closer's max_distance (with some slack for the
+  // optimization that followed).
   for (size_t i = 0; i < res.graph.edgeCount(); i++)
   {
     const auto& e = res.graph.edge(i);

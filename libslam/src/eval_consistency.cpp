@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace swslam::eval
@@ -27,8 +28,10 @@ std::vector<std::pair<size_t, size_t>> nearbyPairs(const std::vector<CPose2D>& p
 {
   std::vector<std::pair<size_t, size_t>> pairs;
   const double r2 = radius * radius;
-  for (size_t i = 0; i < poses.size(); i++)
-    for (size_t j = i + std::max<size_t>(1, min_gap); j < poses.size(); j++)
+  const size_t n = poses.size(), gap = std::max<size_t>(1, min_gap);
+  if (gap >= n) return pairs;
+  for (size_t i = 0; i + gap < n; i++)
+    for (size_t j = i + gap; j < n; j++)
     {
       const double dx = poses[j].x() - poses[i].x(), dy = poses[j].y() - poses[i].y();
       if (dx * dx + dy * dy <= r2) pairs.emplace_back(i, j);
@@ -38,12 +41,20 @@ std::vector<std::pair<size_t, size_t>> nearbyPairs(const std::vector<CPose2D>& p
 
 namespace
 {
-/** Accumulates errors into the stats of a set of pairs. */
+/** Accumulates errors into the stats of a set of pairs. The median comes from a histogram of
+ * kHistogramStep bins up to max_dist (every error is below it: a point farther than max_dist
+ * from its nearest ray is unmatched), so memory stays constant however many pairs a run has. */
 struct Accumulator
 {
+  static constexpr double kHistogramStep = 1e-4;  ///< [m] resolution of the median
   ConsistencyStats stats;
   double sum_sq = 0;
-  std::vector<double> errors;
+  std::vector<size_t> bins;
+
+  explicit Accumulator(const ConsistencyOptions& o)
+      : bins(static_cast<size_t>(std::ceil(o.max_dist / kHistogramStep)) + 1, 0)
+  {
+  }
 
   void add(const std::vector<double>& e, const ConsistencyOptions& o)
   {
@@ -53,9 +64,9 @@ struct Accumulator
       const double c = std::min(v, o.error_cap);
       sum_sq += c * c;
       if (v < o.good_error) stats.good++;
+      bins[std::min(bins.size() - 1, static_cast<size_t>(v / kHistogramStep))]++;
     }
     stats.points += e.size();
-    errors.insert(errors.end(), e.begin(), e.end());
   }
 
   ConsistencyStats finish()
@@ -63,12 +74,16 @@ struct Accumulator
     const double nan = std::numeric_limits<double>::quiet_NaN();
     stats.rms_capped = stats.points ? std::sqrt(sum_sq / static_cast<double>(stats.points)) : nan;
     stats.median = nan;
-    if (!errors.empty())
+    // The bin holding the middle error (the lower middle one for an even count), at its centre.
+    size_t seen = 0;
+    for (size_t b = 0; b < bins.size() && stats.points; b++)
     {
-      const auto mid = errors.begin() + static_cast<std::ptrdiff_t>(errors.size() / 2);
-      std::nth_element(errors.begin(), mid, errors.end());
-      stats.median = *mid;
-      if (errors.size() % 2 == 0) stats.median = 0.5 * (*mid + *std::max_element(errors.begin(), mid));
+      seen += bins[b];
+      if (2 * seen > stats.points - 1)
+      {
+        stats.median = (static_cast<double>(b) + 0.5) * kHistogramStep;
+        break;
+      }
     }
     return stats;
   }
@@ -85,7 +100,7 @@ ConsistencyResult scanConsistency(const std::vector<Scan>& scans,
                                 std::to_string(sensor_poses.size()) + " poses");
   PlicpParams index_params;
   index_params.min_segment_length = options.min_segment;
-  Accumulator all, revisits;
+  Accumulator all(options), revisits(options);
   std::unique_ptr<ReferenceScan> reference;  // rebuilt when the pair's first scan changes
   size_t reference_of = std::numeric_limits<size_t>::max();
   std::vector<Eigen::Vector2d> moved;
@@ -115,14 +130,14 @@ ConsistencyResult scanConsistency(const std::vector<Scan>& scans,
 PosedScans loadPosedScans(const std::string& log_path,
                           const std::vector<std::vector<StampedPose>>& trajectories,
                           double max_dt, size_t stride, double min_range,
-                          const CarmenParams& carmen)
+                          const CarmenParams& carmen, const std::string& sensor_label)
 {
   if (stride == 0) throw std::runtime_error("consistency: the stride must be at least 1");
   std::vector<std::vector<StampedPose>> sorted;
   for (const auto& t : trajectories) sorted.push_back(sortedByTime(t));
   PosedScans out;
   out.sensor_poses.resize(trajectories.size());
-  auto source = openScanSource(log_path, ScanSourceOptions{false, ""}, carmen);
+  auto source = openScanSource(log_path, ScanSourceOptions{false, sensor_label}, carmen);
   ScanInput in;
   size_t associated = 0;
   std::vector<CPose2D> poses(trajectories.size());
@@ -149,17 +164,22 @@ PosedScans loadPosedScans(const std::string& log_path,
     out.scans.push_back(std::move(scan));
   }
   if (out.scans.size() < 2)
-    throw std::runtime_error("consistency: only " + std::to_string(out.scans.size()) + " of the " +
+  {
+    char dt[32];
+    std::snprintf(dt, sizeof(dt), "%g", max_dt);
+    throw std::runtime_error("consistency: " + std::to_string(associated) + " of the " +
                              std::to_string(out.log_scans) + " scans of '" + log_path +
-                             "' have a pose within " + std::to_string(max_dt) +
-                             " s in every trajectory (need 2)");
+                             "' have a pose within " + dt + " s in every trajectory, " +
+                             std::to_string(out.scans.size()) + " kept with stride " +
+                             std::to_string(stride) + " (need 2)");
+  }
   return out;
 }
 
 std::string formatConsistency(const std::string& name, const ConsistencyResult& r,
                               const ConsistencyOptions& options)
 {
-  std::string s;
+  std::string s = "trajectory=" + name + "\n";
   char buf[256];
   const auto put = [&](const char* prefix, const ConsistencyStats& c) {
     std::snprintf(buf, sizeof(buf),
@@ -169,27 +189,28 @@ std::string formatConsistency(const std::string& name, const ConsistencyResult& 
                   c.rms_capped, prefix, c.median);
     s += buf;
   };
-  s += "trajectory=" + name + "\n";
   put("all", r.all);
   put("revisit", r.revisits);
-  std::snprintf(buf, sizeof(buf),
-                "# %s: %zu pairs, median %.1f mm, %.1f%% under %.0f mm; revisits: %zu pairs, "
-                "median %.1f mm, %.1f%% under %.0f mm\n",
-                name.c_str(), r.all.pairs, 1000 * r.all.median, 100 * r.all.fractionGood(),
-                1000 * options.good_error, r.revisits.pairs, 1000 * r.revisits.median,
-                100 * r.revisits.fractionGood(), 1000 * options.good_error);
-  s += buf;
+  const auto human = [&](const ConsistencyStats& c) {
+    if (c.points == 0) return std::to_string(c.pairs) + " pairs, no matched point";
+    std::snprintf(buf, sizeof(buf), "%zu pairs, median %.1f mm, %.1f%% under %.0f mm", c.pairs,
+                  1000 * c.median, 100 * c.fractionGood(), 1000 * options.good_error);
+    return std::string(buf);
+  };
+  s += "# " + name + ": " + human(r.all) + "; revisits: " + human(r.revisits) + "\n";
   return s;
 }
 
 std::string consistencyReport(const std::string& log_path, const std::vector<std::string>& names,
                               const std::vector<std::vector<StampedPose>>& trajectories,
                               const ConsistencyOptions& options, double max_dt, size_t stride,
-                              double min_range, const CarmenParams& carmen)
+                              double min_range, const CarmenParams& carmen,
+                              const std::string& sensor_label)
 {
   if (names.size() != trajectories.size() || trajectories.empty())
     throw std::invalid_argument("consistency: one name per trajectory, at least one");
-  const auto posed = loadPosedScans(log_path, trajectories, max_dt, stride, min_range, carmen);
+  const auto posed =
+      loadPosedScans(log_path, trajectories, max_dt, stride, min_range, carmen, sensor_label);
   std::string out = "scans=" + std::to_string(posed.scans.size()) + "\nlog_scans=" +
                     std::to_string(posed.log_scans) + "\nunposed_scans=" +
                     std::to_string(posed.unposed) + "\n";

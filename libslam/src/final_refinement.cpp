@@ -4,14 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace swslam
 {
 using mrpt::poses::CPose2D;
 
-std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const PoseGraph& graph, double radius)
+std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const PoseGraph& graph, double radius,
+                                                          size_t max_per_node)
 {
   std::vector<std::pair<size_t, size_t>> pairs;
+  std::vector<double> dist;  // of each pair
   const auto ids = graph.nodeIds();
   std::vector<size_t> linked;  // the other ends of node i's edges
   for (size_t a = 0; a < ids.size(); ++a)
@@ -28,12 +31,30 @@ std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const PoseGraph& graph
     for (size_t b = a + 1; b < ids.size(); ++b)
     {
       const size_t j = ids[b];
-      if ((graph.pose(j).translation() - here).norm() <= radius &&
-          !std::binary_search(linked.begin(), linked.end(), j))
+      const double d = (graph.pose(j).translation() - here).norm();
+      if (d <= radius && !std::binary_search(linked.begin(), linked.end(), j))
+      {
         pairs.emplace_back(i, j);
+        dist.push_back(d);
+      }
     }
   }
-  return pairs;
+  if (max_per_node == 0) return pairs;
+  // Each newer node keeps its nearest max_per_node partners (ties: the older one first).
+  std::vector<size_t> order(pairs.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return std::tie(pairs[a].second, dist[a], pairs[a].first) <
+           std::tie(pairs[b].second, dist[b], pairs[b].first);
+  });
+  std::vector<std::pair<size_t, size_t>> kept;
+  for (size_t k = 0, run = 0; k < order.size(); ++k)
+  {
+    run = k > 0 && pairs[order[k]].second == pairs[order[k - 1]].second ? run + 1 : 0;
+    if (run < max_per_node) kept.push_back(pairs[order[k]]);
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
 }
 
 LoopCheck verifyRefinementPair(const PoseGraph& graph, const LoopNode& older, const LoopNode& newer,
@@ -64,7 +85,7 @@ std::vector<LoopCheck> refinementChecks(const PoseGraph& graph,
                                         const FinalRefinementParams& p, const PlicpParams& plicp)
 {
   std::vector<LoopCheck> checks;
-  for (const auto& [i, j] : unlinkedClosePairs(graph, p.radius))
+  for (const auto& [i, j] : unlinkedClosePairs(graph, p.radius, static_cast<size_t>(p.max_pairs_per_node)))
     checks.push_back(verifyRefinementPair(graph, node(i), node(j), p, plicp));
   return checks;
 }

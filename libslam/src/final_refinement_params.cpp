@@ -15,6 +15,7 @@ void FinalRefinementParams::check() const
   };
   require(passes >= 1, "passes must be >= 1");
   require(std::isfinite(radius) && radius >= 0, "radius must be finite and >= 0");
+  require(max_pairs_per_node >= 0, "max_pairs_per_node must be >= 0");
   require(min_inlier_fraction >= 0 && min_inlier_fraction <= 1,
           "min_inlier_fraction must be in [0, 1]");
   require(std::isfinite(chi2_gate) && chi2_gate > 0, "chi2_gate must be finite and > 0");
@@ -31,6 +32,7 @@ void FinalRefinementParams::loadFromConfigFile(const mrpt::config::CConfigFileBa
   MRPT_LOAD_CONFIG_VAR_CS(enabled, bool);
   MRPT_LOAD_CONFIG_VAR_CS(passes, int);
   MRPT_LOAD_CONFIG_VAR_CS(radius, double);
+  MRPT_LOAD_CONFIG_VAR_CS(max_pairs_per_node, int);
   MRPT_LOAD_CONFIG_VAR_CS(min_inlier_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(chi2_gate, double);
   MRPT_LOAD_CONFIG_VAR_CS(sigma_xy, double);
@@ -47,6 +49,8 @@ void FinalRefinementParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "once the input ends, match every close unlinked pair");
   MRPT_SAVE_CONFIG_VAR_COMMENT(passes, "rounds of match, add edges, optimize the whole graph");
   MRPT_SAVE_CONFIG_VAR_COMMENT(radius, "[m] pairs at most this far apart at their optimized poses");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_pairs_per_node,
+                               "each node matched with at most this many older ones, nearest first (0: all)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_inlier_fraction,
                                "fraction of the newer scan's valid rays matched at the end");
   MRPT_SAVE_CONFIG_VAR_COMMENT(chi2_gate, "d^2 bound (11.34: 99 % of chi-square, 3 dof)");

@@ -19,6 +19,8 @@ RunSummary summarizeRun(const RunResults& results, double wall_time,
   s.nodes = results.graph.nodeCount();
   s.constraints = results.graph.edgeCount();
   s.loops = results.loops;
+  s.refinement_pairs = results.refinement_pairs;
+  s.refinement_edges = results.refinement_edges;
   for (const ScanStats& r : results.stats)
     if (r.source == TrackingSource::Odometry || r.source == TrackingSource::ConstantMotion)
       s.fallback_scans++;

@@ -67,6 +67,12 @@ std::string formatRunSummary(const RunSummary& s)
   out << buf;
   std::snprintf(buf, sizeof(buf), "| Number of graph constraints (loops) | %zu (%zu) |\n", s.constraints, s.loops);
   out << buf;
+  if (s.refinement_pairs > 0)
+  {
+    std::snprintf(buf, sizeof(buf), "| Final refinement: pairs matched (edges added) | %zu (%zu) |\n",
+                  s.refinement_pairs, s.refinement_edges);
+    out << buf;
+  }
   std::snprintf(buf, sizeof(buf), "| Travelling distance | %.3f m |\n", s.distance);
   out << buf;
   std::snprintf(buf, sizeof(buf), "| Sensor time / processing time | %.1f s / %.2f s (%.1fx real time) |\n",

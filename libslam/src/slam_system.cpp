@@ -138,11 +138,16 @@ void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
     {
       ScanStats& row = stats_[step.scan];
       row.graph_ms += 1e3 * seconds;
-      row.active_sq_residuals = step.report.active_sq_residuals;
+      // A step that optimized nothing (e.g. a final refinement that added no edge) keeps the
+      // row's residuals: Fig. 7's curve carries the last optimization's.
+      if (step.report.status != OptimizationStatus::NothingToOptimize || step.full)
+        row.active_sq_residuals = step.report.active_sq_residuals;
       row.loops += step.loops_accepted;
       row.full_optimization = row.full_optimization || step.full;
     }
     status_.loops += step.loops_accepted;
+    status_.refinement_pairs += step.pairs_refined;
+    status_.refinement_edges += step.refinement_edges;
   }
   auto toMap = [this](MapMessage m) {
     if (mode_ == RunMode::Deterministic)
@@ -308,6 +313,8 @@ RunResults SlamSystem::results() const
   std::lock_guard<std::mutex> lock(results_mutex_);
   r.stats = stats_;
   r.skipped = status_.skipped;
+  r.refinement_pairs = status_.refinement_pairs;
+  r.refinement_edges = status_.refinement_edges;
   // Rows without an optimization carry the last one's residuals (Fig. 7 is a curve).
   double active = 0;
   for (ScanStats& row : r.stats)

@@ -23,8 +23,8 @@ namespace swslam::eval
 struct ConsistencyOptions
 {
   double radius = 3.0;        ///< [m] pairs of scans whose sensors are this close...
-  size_t min_gap = 1;         ///< ...and at least this many (scored) scans apart
-  size_t revisit_gap = 30;    ///< pairs this many scans apart are also scored as revisits
+  size_t min_gap = 1;         ///< ...and at least this many scored scans apart (after the stride)
+  size_t revisit_gap = 30;    ///< pairs this many scored scans apart are also scored as revisits
   double max_dist = 0.5;      ///< [m] a point farther from the other scan's nearest ray is unmatched
   double good_error = 0.05;   ///< [m] point-to-line errors below this count as agreeing
   double error_cap = 0.2;     ///< [m] errors enter the rms capped at this (clutter, occlusion)
@@ -38,7 +38,7 @@ struct ConsistencyStats
   size_t points = 0;  ///< matched points (within max_dist of the other scan)
   size_t good = 0;    ///< of them, with an error below good_error (output: frac_good)
   double rms_capped = 0;  ///< [m] rms of min(error, error_cap); NaN without points
-  double median = 0;      ///< [m] NaN without points
+  double median = 0;      ///< [m] to 0.1 mm (a histogram); NaN without points
   double fractionGood() const;
 };
 
@@ -72,21 +72,23 @@ struct PosedScans
 };
 
 /** Reads the scans of `log_path` (rawlog, or CARMEN log read with `carmen`, as swslam reads
- * it; rays shorter than `min_range` dropped) and associates each with the pose of each trajectory closest in time,
+ * it; rays shorter than `min_range` dropped; only the scans of `sensor_label`, or of the first
+ * sensor seen if empty) and associates each with the pose of each trajectory closest in time,
  * within `max_dt` seconds. Keeps every `stride`-th associated scan (long runs: pass their
  * keyframes, or a stride). Throws std::runtime_error naming the problem if the log cannot be
  * read or fewer than two scans associate. */
 PosedScans loadPosedScans(const std::string& log_path,
                           const std::vector<std::vector<StampedPose>>& trajectories,
                           double max_dt, size_t stride, double min_range,
-                          const CarmenParams& carmen);
+                          const CarmenParams& carmen, const std::string& sensor_label = "");
 
 /** What `swslam-eval consistency` prints: reads the log, picks the pairs on the first
  * trajectory and scores every trajectory on them (`names` label them). */
 std::string consistencyReport(const std::string& log_path, const std::vector<std::string>& names,
                               const std::vector<std::vector<StampedPose>>& trajectories,
                               const ConsistencyOptions& options, double max_dt, size_t stride,
-                              double min_range, const CarmenParams& carmen);
+                              double min_range, const CarmenParams& carmen,
+                              const std::string& sensor_label = "");
 
 /** "key=value" lines for one trajectory's result (`trajectory=name`, then `all_*` and
  * `revisit_*`), then a '#' line for a human reader. */

@@ -21,8 +21,11 @@
 namespace swslam
 {
 /** Every pair (i, j), i < j, of graph nodes at most `radius` apart (vehicle positions) that
- * share no edge, in increasing (i, j) order. O(n^2) distances, no scan work. */
-std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const PoseGraph& graph, double radius);
+ * share no edge, in increasing (i, j) order; with max_per_node > 0, only the max_per_node
+ * nearest partners of each newer node j (a run that circles the same place many times keeps a
+ * bounded number of matches per node). O(n^2) distances, no scan work. */
+std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const PoseGraph& graph, double radius,
+                                                          size_t max_per_node = 0);
 
 /** verifyLoop() of the pair's newer node against the older one with the acceptance of `p`
  * (no correlative search: the optimized graph's guess is close); an accepted match that moves

@@ -12,6 +12,7 @@ struct FinalRefinementParams : public mrpt::config::CLoadableOptions
   bool enabled = true;   ///< once the input ends, match every close unlinked pair of nodes
   int passes = 1;        ///< rounds of (match the pairs, add the accepted edges, optimize all)
   double radius = 3.0;   ///< [m] pairs whose optimized (vehicle) poses are at most this far apart
+  int max_pairs_per_node = 20;  ///< each node is matched with at most this many older ones, nearest first (0: all)
 
   // Acceptance, as a loop check's (verifyLoop) with the drift model replaced by a fixed error
   // of the optimized graph's relative pose.

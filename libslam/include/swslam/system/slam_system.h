@@ -55,6 +55,7 @@ struct FeedResult
 struct SystemStatus
 {
   size_t scans = 0, skipped = 0, nodes = 0, loops = 0, fallbacks = 0;
+  size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t queued = 0;  ///< scans waiting for tracking
   TrackingSource last_source = TrackingSource::First;
   MatchStatus last_match = MatchStatus::InvalidInput;
@@ -69,6 +70,7 @@ struct RunResults
   PoseGraph graph;
   std::vector<ScanStats> stats;
   size_t skipped = 0, loops = 0;
+  size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t map_bytes = 0;  ///< memory held by the map (grid, sums, per-node contributions)
 };
 
