@@ -11,7 +11,7 @@
 #include <cmath>
 #include <random>
 
-#include "test_support.h"
+#include "loop_test_support.h"
 
 using namespace swslam;
 using mrpt::poses::CPose2D;
@@ -24,15 +24,10 @@ const CPose2D kMount(0.3, 0.1, 0.05);
 
 LoopNode nodeAt(const test::World& world, size_t id, const CPose2D& vehicle, std::mt19937& rng)
 {
-  auto obs = test::simulateObservation(world, vehicle + kMount, 541, 1.5 * M_PI, 30, 0.02, rng);
-  obs.sensorPose = mrpt::poses::CPose3D(kMount);
-  return {id, std::make_shared<const ReferenceScan>(scanFromObservation(obs)), 0.0};
+  return test::mountedNode(world, id, vehicle, 0.0, rng, kMount);
 }
 
-mrpt::poses::CPosePDFGaussianInf weakEdge(const CPose2D& z)
-{
-  return {z, mrpt::math::CMatrixDouble33(Eigen::Matrix3d::Identity())};
-}
+using test::weakEdge;
 
 /** Node 0 scanned at `a`; node 1 revisits it 0.94 m away, turned 25 deg, placed in the graph
  * off by `offset`; node 2 is placed next to node 0 but its scan was taken 15 m away; node 3

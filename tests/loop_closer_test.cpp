@@ -13,7 +13,7 @@
 #include <cmath>
 #include <random>
 
-#include "test_support.h"
+#include "loop_test_support.h"
 
 using namespace swslam;
 using mrpt::poses::CPose2D;
@@ -27,15 +27,10 @@ constexpr double kDeg = M_PI / 180;
 LoopNode nodeAt(const test::World& world, size_t id, const CPose2D& vehicle, double path_length,
                 std::mt19937& rng, const CPose2D& mount = kMount)
 {
-  auto obs = test::simulateObservation(world, vehicle + mount, 541, 1.5 * M_PI, 30, 0.02, rng);
-  obs.sensorPose = mrpt::poses::CPose3D(mount);
-  return {id, std::make_shared<const ReferenceScan>(scanFromObservation(obs)), path_length};
+  return test::mountedNode(world, id, vehicle, path_length, rng, mount);
 }
 
-mrpt::poses::CPosePDFGaussianInf weakEdge(const CPose2D& z)
-{
-  return {z, mrpt::math::CMatrixDouble33(Eigen::Matrix3d::Identity())};
-}
+using test::weakEdge;
 
 /** A revisit on the cluttered scene: node 0 at `a`, node 40 scanned at `b` but placed in the
  * graph at b moved by `graph_offset` (the drift). */

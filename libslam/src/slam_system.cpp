@@ -140,7 +140,7 @@ void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
       row.graph_ms += 1e3 * seconds;
       // A step that optimized nothing (e.g. a final refinement that added no edge) keeps the
       // row's residuals: Fig. 7's curve carries the last optimization's.
-      if (step.report.status != OptimizationStatus::NothingToOptimize || step.full)
+      if (step.report.status != OptimizationStatus::NothingToOptimize)
         row.active_sq_residuals = step.report.active_sq_residuals;
       row.loops += step.loops_accepted;
       row.full_optimization = row.full_optimization || step.full;
