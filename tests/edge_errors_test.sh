@@ -9,13 +9,8 @@ src=$1
 script=$src/scripts/edge-errors.py
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-py=
-for cand in python3 /usr/bin/python3; do
-  if command -v "$cand" > /dev/null; then
-    py=$cand
-    break
-  fi
-done
+source "$src/tests/python_support.sh"
+py=$(find_python)
 if [[ -z $py ]]; then
   echo "SKIP edge_errors_test: no python3"
   exit 77

@@ -10,13 +10,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # The python3 on PATH first, then Debian's (python3-matplotlib installs for that one).
-py=
-for cand in python3 /usr/bin/python3; do
-  if command -v "$cand" > /dev/null && "$cand" -c 'import matplotlib' 2> /dev/null; then
-    py=$cand
-    break
-  fi
-done
+source "$src/tests/python_support.sh"
+py=$(find_python matplotlib)
 if [[ -z $py ]]; then
   echo "SKIP plot_stats_test: no python3 with matplotlib (install python3-matplotlib)"
   exit 77
