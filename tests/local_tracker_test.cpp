@@ -27,11 +27,13 @@ std::vector<CPose2D> sCurve(int n)
   return path;
 }
 
+/** The scan a sensor mounted at `mount` takes at time t [s]. */
 mrpt::obs::CObservation2DRangeScan scanAt(const test::World& world, const CPose2D& vehicle,
-                                          const CPose2D& mount, std::mt19937& rng)
+                                          const CPose2D& mount, double t, std::mt19937& rng)
 {
   auto obs = test::simulateObservation(world, vehicle + mount, 541, 1.5 * M_PI, 30, 0.02, rng);
   obs.sensorPose = mrpt::poses::CPose3D(mount);
+  obs.timestamp = mrpt::Clock::fromDouble(1000 + t);
   return obs;
 }
 }  // namespace
@@ -48,7 +50,7 @@ TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges)
   size_t consecutive = 0;
   for (size_t k = 0; k < path.size(); k++)
   {
-    const auto step = tracker.process(scanAt(world, path[k], mount, rng));
+    const auto step = tracker.process(scanAt(world, path[k], mount, 0.05 * k, rng));
     const CPose2D expected = (-path[0]) + path[k];  // the map frame is the first pose
     EXPECT_NEAR(step.pose.x(), expected.x(), 0.1 + 0.002 * k) << "scan " << k;
     EXPECT_NEAR(step.pose.y(), expected.y(), 0.1 + 0.002 * k) << "scan " << k;
@@ -85,9 +87,9 @@ TEST(LocalTracker, DenseEdgesConnectNearbyNodes)
   tp.dense_radius = 2.0;
   LocalTracker tracker(tp, PlicpParams());
   size_t dense = 0;
-  for (const auto& p : path)
+  for (size_t k = 0; k < path.size(); k++)
   {
-    const auto step = tracker.process(scanAt(world, p, CPose2D(), rng));
+    const auto step = tracker.process(scanAt(world, path[k], CPose2D(), 0.05 * k, rng));
     for (const auto& e : step.edges)
     {
       if (e.kind != EdgeKind::DenseNeighbour) continue;
@@ -111,7 +113,7 @@ TEST(LocalTracker, ScansWithoutValidRaysFallBackAndSaySo)
   size_t fallbacks = 0, priors = 0;
   for (size_t k = 0; k < path.size(); k++)
   {
-    auto obs = scanAt(world, path[k], CPose2D(), rng);
+    auto obs = scanAt(world, path[k], CPose2D(), 0.05 * k, rng);
     const bool blind = k >= 40 && k < 70;  // 1.5 s of "open water"
     if (blind)
       for (size_t i = 0; i < obs.getScanSize(); i++) obs.setScanRangeValidity(i, false);
@@ -147,7 +149,7 @@ TEST(LocalTracker, OdometryIsTheFallbackWhenGiven)
   LocalTracker tracker{TrackingParams(), PlicpParams()};
   for (size_t k = 0; k < path.size(); k++)
   {
-    auto obs = scanAt(world, path[k], CPose2D(), rng);
+    auto obs = scanAt(world, path[k], CPose2D(), 0.05 * k, rng);
     if (k == 30)
       for (size_t i = 0; i < obs.getScanSize(); i++) obs.setScanRangeValidity(i, false);
     const auto odo = k > 0 ? std::optional<CPose2D>(path[k] - path[k - 1]) : std::nullopt;
@@ -163,9 +165,9 @@ TEST(LocalTracker, MovedKeyframesMoveLaterScans)
   const auto path = sCurve(10);
   std::mt19937 rng(5);
   LocalTracker tracker{TrackingParams(), PlicpParams()};
-  tracker.process(scanAt(world, path[0], CPose2D(), rng));
+  tracker.process(scanAt(world, path[0], CPose2D(), 0.0, rng));
   tracker.setKeyframePose(0, CPose2D(10, 0, 0));
-  const auto step = tracker.process(scanAt(world, path[1], CPose2D(), rng));
+  const auto step = tracker.process(scanAt(world, path[1], CPose2D(), 0.05, rng));
   EXPECT_NEAR(step.pose.x(), 10 + ((-path[0]) + path[1]).x(), 0.02);
 }
 
@@ -195,7 +197,8 @@ std::pair<double, double> worstError(LocalTracker& tracker, const std::vector<CP
   double worst_xy = 0, worst_th = 0;
   for (size_t k = 0; k < path.size(); k++)
   {
-    const auto obs = test::simulateObservation(world, path[k], 181, M_PI, 30, 0.02, rng);
+    auto obs = test::simulateObservation(world, path[k], 181, M_PI, 30, 0.02, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + 0.1 * k);
     const auto step = tracker.process(obs);
     searched += step.source == TrackingSource::Searched;
     const CPose2D truth = (-path[0]) + path[k];
@@ -227,6 +230,45 @@ TEST(LocalTracker, LargeUnpredictedTurnsAreTrackedByTheSearch)
       << th_off * 180 / M_PI << " deg)";
 }
 
+namespace
+{
+/** Along a corridor lined with posts every 0.4 m at 2 m/s, scans every 0.05 or 0.15 s in turn
+ * (as a loaded computer or a simulator may stamp them): steps of 0.1 and 0.3 m. The last step
+ * as the prediction is then 0.2 m off, half the posts' spacing, where PLICP can settle on the
+ * wrong post. Returns the worst change of the along-corridor error after the first 10 scans
+ * (the first steps, predicted from rest, may start a post off) [m]. */
+double corridorDrift(const TrackingParams& tp)
+{
+  auto world = test::corridorWorld();
+  for (double x = -10; x <= 60; x += 0.4) world.circles.push_back({x, 1.0, 0.1});
+  std::mt19937 rng(11);
+  LocalTracker tracker(tp, PlicpParams());
+  double t = 0, x = 0, worst = 0, start_error = 0;
+  for (int k = 0; k < 150; k++)
+  {
+    auto obs = test::simulateObservation(world, CPose2D(x, 0, 0), 541, 1.5 * M_PI, 8, 0.01, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + t);
+    const auto st = tracker.process(obs);
+    if (k == 10) start_error = st.pose.x() - x;
+    if (k >= 10) worst = std::max(worst, std::abs(st.pose.x() - x - start_error));
+    const double dt = k % 2 ? 0.15 : 0.05;
+    t += dt;
+    x += 2.0 * dt;
+  }
+  return worst;
+}
+}  // namespace
+
+TEST(LocalTracker, IrregularScanIntervalsArePredictedAtConstantVelocity)
+{
+  TrackingParams tp;
+  const double with = corridorDrift(tp);
+  tp.constant_velocity = false;
+  const double without = corridorDrift(tp);
+  EXPECT_LT(with, 0.1);
+  EXPECT_GT(without, 1.0) << "the last step as the prediction should lose this corridor";
+}
+
 TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)
 {
   // An older node moved by 0.6 m: its dense match from the (now wrong) estimate converges to
@@ -247,7 +289,7 @@ TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)
         moved = tracker.keyframes().size() - 2;
         tracker.setKeyframePose(moved, tracker.keyframes()[moved].pose + CPose2D(0.6, 0, 0));
       }
-      const auto step = tracker.process(scanAt(world, path[k], CPose2D(), rng));
+      const auto step = tracker.process(scanAt(world, path[k], CPose2D(), 0.05 * k, rng));
       for (const auto& e : step.edges)
       {
         if (e.kind != EdgeKind::DenseNeighbour || k < 40) continue;

@@ -1,7 +1,10 @@
 #include "swslam/tracking/local_tracker.h"
 
+#include "swslam/tracking/motion_prediction.h"
 #include "swslam/tracking/searched_match.h"
 #include "swslam/tracking/sensor_frame.h"
+
+#include <mrpt/system/datetime.h>
 
 #include <Eigen/Dense>
 
@@ -137,6 +140,10 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
                                    const std::optional<CPose2D>& odometry_increment)
 {
   const Scan scan = scanFromObservation(obs, tracking_.min_range);
+  // Seconds since the previous scan (0 for the first).
+  const double interval =
+      keyframes_.empty() ? 0.0 : mrpt::system::timeDifference(last_time_, scan.timestamp);
+  last_time_ = scan.timestamp;
   TrackingStep step;
   step.valid_rays = scan.size();
   if (keyframes_.empty())
@@ -147,8 +154,13 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   }
   const Keyframe& last = keyframes_.back();
   // Initial guess: the previous relative pose moved by the expected motion (the paper uses
-  // the previous motion; odometry, when present, is the better prediction).
-  const CPose2D motion = odometry_increment ? *odometry_increment : last_motion_;
+  // the previous motion, here at constant velocity over this scan's interval; odometry, when
+  // present, is the better prediction).
+  const double scale = tracking_.constant_velocity
+                           ? intervalRatio(interval, last_interval_, tracking_.max_interval_ratio)
+                           : 1.0;
+  last_interval_ = interval;
+  const CPose2D motion = odometry_increment ? *odometry_increment : scaledMotion(last_motion_, scale);
   const CPose2D predicted = relative_ + motion;
   const auto t0 = std::chrono::steady_clock::now();
   step.source = TrackingSource::Match;

@@ -22,6 +22,8 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   MRPT_LOAD_CONFIG_VAR_CS(lost_prior_sigma_xy, double);
   lost_prior_sigma_theta = mrpt::DEG2RAD(
       c.read_double(s, "lost_prior_sigma_theta_DEG", mrpt::RAD2DEG(lost_prior_sigma_theta)));
+  MRPT_LOAD_CONFIG_VAR_CS(constant_velocity, bool);
+  MRPT_LOAD_CONFIG_VAR_CS(max_interval_ratio, double);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -33,6 +35,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(dense_max_index_gap >= 1, "dense_max_index_gap must be >= 1");
   require(dense_gate_xy > 0 && dense_gate_theta > 0, "dense_gate_xy and dense_gate_theta_DEG must be > 0");
   require(lost_prior_sigma_xy > 0 && lost_prior_sigma_theta > 0, "lost_prior_sigma_* must be > 0");
+  require(max_interval_ratio >= 1, "max_interval_ratio must be >= 1");
 }
 
 void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -47,6 +50,8 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("dense_gate_theta_DEG", dense_gate_theta, "[deg] ...or turned more than this");
   MRPT_SAVE_CONFIG_VAR_COMMENT(lost_prior_sigma_xy, "[m] std of the weak prior edge of a node made without a match");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("lost_prior_sigma_theta_DEG", lost_prior_sigma_theta, "[deg] same for rotation");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(constant_velocity, "predict the previous motion over the new scan interval (false: per scan)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_interval_ratio, "...scaled by at most this (or 1 / this) times");
 }
 
 }  // namespace swslam

@@ -105,6 +105,8 @@ class LocalTracker
   std::vector<Keyframe> keyframes_;
   mrpt::poses::CPose2D relative_;     ///< last scan's vehicle pose relative to the last keyframe
   mrpt::poses::CPose2D last_motion_;  ///< vehicle motion between the last two scans
+  mrpt::Clock::time_point last_time_;  ///< the last scan's timestamp
+  double last_interval_ = 0;           ///< [s] between the last two scans (0: unknown)
   SteadyMotion steady_;  ///< the recent motions, for the search's steady-motion prior
 };
 

@@ -19,6 +19,8 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double dense_gate_theta = 5.0 * M_PI / 180;  ///< [rad] ...or turned more (ini: dense_gate_theta_DEG)
   double lost_prior_sigma_xy = 1.0;    ///< [m] std of the weak prior edge when a node is made without a match
   double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
+  bool constant_velocity = true;   ///< predict the previous motion over the new scan interval (false: per scan)
+  double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
