@@ -269,6 +269,48 @@ TEST(LocalTracker, IrregularScanIntervalsArePredictedAtConstantVelocity)
   EXPECT_GT(without, 1.0) << "the last step as the prediction should lose this corridor";
 }
 
+namespace
+{
+struct DoorScan
+{
+  bool searched;
+  double error;  ///< [m] of the scan's pose
+};
+
+/** Across the room at 1 m/s, 10 scans a second; at scan 30 a door swings shut 0.6 m in front
+ * of the sensor and hides most of the room for that scan. */
+DoorScan doorSwingsShut(const CorrelativeParams& cp)
+{
+  const auto room = test::roomWorld();
+  auto shut = room;
+  std::mt19937 rng(12);
+  LocalTracker tracker(TrackingParams(), PlicpParams(), cp);
+  DoorScan out{false, 0};
+  for (int k = 0; k <= 30; k++)
+  {
+    const CPose2D truth(-6 + 0.1 * k, -1, 0);
+    if (k == 30) shut.segments.push_back({truth.x() + 0.6, -3.5, truth.x() + 0.6, 1.5});
+    auto obs = test::simulateObservation(k == 30 ? shut : room, truth, 181, M_PI, 30, 0.01, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + 0.1 * k);
+    const auto step = tracker.process(obs);
+    if (k < 30) continue;
+    EXPECT_LT(step.match.inliers, 0.5 * step.valid_rays) << "the door should hide most of the room";
+    out = {step.searched, (step.pose.translation() - ((-CPose2D(-6, -1, 0)) + truth).translation()).norm()};
+  }
+  return out;
+}
+}  // namespace
+
+TEST(LocalTracker, AProvenPredictionIsKeptWhenTheSurroundingsChange)
+{
+  CorrelativeParams cp;
+  const DoorScan kept = doorSwingsShut(cp);
+  EXPECT_FALSE(kept.searched);
+  EXPECT_LT(kept.error, 0.05);
+  cp.trust_prediction_after = 0;  // the little overlap alone calls for the search
+  EXPECT_TRUE(doorSwingsShut(cp).searched);
+}
+
 TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)
 {
   // An older node moved by 0.6 m: its dense match from the (now wrong) estimate converges to

@@ -44,6 +44,21 @@ TEST(SearchedMatch, PredictionFailsOnAFailedMatchFewInliersOrALargeCorrection)
   EXPECT_TRUE(predictionFailed(converged(guess, 0, 0), guess, p));
 }
 
+TEST(SearchedMatch, TheTriggerSaysWhy)
+{
+  CorrelativeParams p;
+  const CPose2D guess(1, 2, 0.5);
+  EXPECT_EQ(searchTrigger(converged(guess, 60, 100), guess, p), SearchTrigger::None);
+  EXPECT_EQ(searchTrigger(converged(guess, 49, 100), guess, p), SearchTrigger::LowOverlap);
+  // A match that moved its guess is "moved" whatever its overlap: only a match that stayed
+  // near its guess can be trusted with little overlap (LocalTracker, trust_prediction_after).
+  EXPECT_EQ(searchTrigger(converged(guess + CPose2D(0.2, 0, 0), 10, 100), guess, p), SearchTrigger::Moved);
+  EXPECT_EQ(searchTrigger(converged(guess + CPose2D(0, 0, 0.04), 90, 100), guess, p), SearchTrigger::Moved);
+  MatchResult failed = converged(guess, 90, 100);
+  failed.status = MatchStatus::TooFewCorrespondences;
+  EXPECT_EQ(searchTrigger(failed, guess, p), SearchTrigger::Failed);
+}
+
 TEST(SearchedMatch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
 {
   Scan s;

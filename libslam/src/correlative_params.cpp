@@ -14,6 +14,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   trigger_correction_theta = mrpt::DEG2RAD(
       c.read_double(s, "trigger_correction_theta_DEG", mrpt::RAD2DEG(trigger_correction_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(trigger_inlier_fraction, double);
+  MRPT_LOAD_CONFIG_VAR_CS(trust_prediction_after, int);
   MRPT_LOAD_CONFIG_VAR_CS(submap_keyframes, int);
   MRPT_LOAD_CONFIG_VAR_CS(resolution, double);
   MRPT_LOAD_CONFIG_VAR_CS(sigma, double);
@@ -37,6 +38,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
           "trigger_correction_xy and trigger_correction_theta_DEG must be >= 0");
   require(trigger_inlier_fraction >= 0 && trigger_inlier_fraction <= 1,
           "trigger_inlier_fraction must be in [0, 1]");
+  require(trust_prediction_after >= 0, "trust_prediction_after must be >= 0");
   require(submap_keyframes >= 1, "submap_keyframes must be >= 1");
   require(resolution > 0 && sigma > 0, "resolution and sigma must be > 0");
   require(free_space_score >= -1 && free_space_score <= 0, "free_space_score must be in [-1, 0]");
@@ -61,6 +63,7 @@ void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
   MRPT_SAVE_CONFIG_VAR_COMMENT(trigger_correction_xy, "[m] search if the match moved the prediction more than this...");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("trigger_correction_theta_DEG", trigger_correction_theta, "[deg] ...or turned it more than this...");
   MRPT_SAVE_CONFIG_VAR_COMMENT(trigger_inlier_fraction, "...or ended with fewer inliers than this fraction");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(trust_prediction_after, "...unless it kept a prediction confirmed this many scans in a row (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(submap_keyframes, "the score grid holds the last this many keyframes' points");
   MRPT_SAVE_CONFIG_VAR_COMMENT(resolution, "[m] score grid cell and translation step");
   MRPT_SAVE_CONFIG_VAR_COMMENT(sigma, "[m] score kernel sigma");

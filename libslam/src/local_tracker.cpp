@@ -70,7 +70,16 @@ MatchResult LocalTracker::matchLast(const Scan& scan, const CPose2D& guess, Trac
 {
   const Keyframe& last = keyframes_.back();
   MatchResult m = matchScans(*last.scan, scan, guess, plicp_);
-  if (!correlative_.enabled || !predictionFailed(m, guess, correlative_)) return m;
+  if (!correlative_.enabled) return m;
+  const SearchTrigger why = searchTrigger(m, guess, correlative_);
+  // A match that lands on a prediction proven by the last scans is kept even with little
+  // overlap: the surroundings are new or changed (a door swung shut), which the submap cannot
+  // explain and the search would explain elsewhere.
+  const bool proven = correlative_.trust_prediction_after > 0 &&
+                      confirmed_in_a_row_ >= static_cast<size_t>(correlative_.trust_prediction_after);
+  if (why == SearchTrigger::None) confirmed_in_a_row_++;
+  if (why == SearchTrigger::None || (why == SearchTrigger::LowOverlap && proven)) return m;
+  confirmed_in_a_row_ = 0;
   if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
   {
     search_pyramid_ = std::make_shared<const correlative::ScorePyramid>(

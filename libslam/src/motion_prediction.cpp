@@ -23,6 +23,7 @@ void vCoefficients(double t, double& a, double& b)
 
 mrpt::poses::CPose2D scaledMotion(const mrpt::poses::CPose2D& m, double s)
 {
+  if (s == 1) return m;  // exactly, not up to rounding
   // log: the translation is V(theta) u with V = [a -b; b a]; exp at s theta maps s u back.
   const double theta = m.phi();
   double a, b;

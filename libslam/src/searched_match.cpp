@@ -49,12 +49,19 @@ correlative::SearchWindow searchWindow(const CorrelativeParams& p, const CPose2D
   return w;
 }
 
+SearchTrigger searchTrigger(const MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
+{
+  if (!m.ok() || m.cur_valid_rays == 0) return SearchTrigger::Failed;
+  if ((m.pose.translation() - guess.translation()).norm() > p.trigger_correction_xy ||
+      angleDiff(m.pose.phi(), guess.phi()) > p.trigger_correction_theta)
+    return SearchTrigger::Moved;
+  if (m.inliers < p.trigger_inlier_fraction * m.cur_valid_rays) return SearchTrigger::LowOverlap;
+  return SearchTrigger::None;
+}
+
 bool predictionFailed(const MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
 {
-  if (!m.ok() || m.cur_valid_rays == 0) return true;
-  if (m.inliers < p.trigger_inlier_fraction * m.cur_valid_rays) return true;
-  return (m.pose.translation() - guess.translation()).norm() > p.trigger_correction_xy ||
-         angleDiff(m.pose.phi(), guess.phi()) > p.trigger_correction_theta;
+  return searchTrigger(m, guess, p) != SearchTrigger::None;
 }
 
 SearchedMatch searchAndMatch(const ReferenceScan& reference, const ScorePyramid& pyramid,

@@ -15,6 +15,7 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   double trigger_correction_xy = 0.1;  ///< [m] ... moved the prediction more than this,
   double trigger_correction_theta = 2.0 * M_PI / 180;  ///< [rad] or turned it more (ini: _DEG),
   double trigger_inlier_fraction = 0.5;  ///< or ended with fewer inliers than this (or failed)
+  int trust_prediction_after = 10;  ///< ...unless it kept a prediction confirmed this many scans in a row (0: never)
   // The search.
   int submap_keyframes = 5;  ///< the score grid holds the points of the last this many keyframes
   double resolution = 0.1;  ///< [m] score grid cell, and translation step

@@ -28,9 +28,19 @@ correlative::SearchWindow searchWindow(const CorrelativeParams& p, const mrpt::p
  * of a search against that scan alone. */
 std::vector<correlative::Ray> scanRays(const Scan& scan, double max_range);
 
-/** The match's prediction was unreliable: the match failed, ended with fewer than
- * trigger_inlier_fraction of the scan's points as inliers, or moved the guess (sensor
- * frame) by more than trigger_correction_xy or trigger_correction_theta. */
+/** Why a tracking match calls for the search. */
+enum class SearchTrigger
+{
+  None,        ///< the match confirms its prediction
+  Failed,      ///< the match failed
+  Moved,       ///< it moved the guess (sensor frame) by more than trigger_correction_xy or _theta
+  LowOverlap,  ///< it stayed near the guess with fewer than trigger_inlier_fraction of the
+               ///< scan's points as inliers
+};
+SearchTrigger searchTrigger(const MatchResult& m, const mrpt::poses::CPose2D& guess,
+                            const CorrelativeParams& p);
+
+/** The match's prediction was unreliable: searchTrigger() is not None. */
 bool predictionFailed(const MatchResult& m, const mrpt::poses::CPose2D& guess,
                       const CorrelativeParams& p);
 
