@@ -7,7 +7,10 @@
 #  4. the corrected CARMEN logs laser-only (ATE; and the scans' agreement at swslam's poses
 #     and at the reference poses, swslam-eval consistency), and the open-water scenario;
 #  5. MRPT's Telecom Faculty one-loop rawlog: the map before and after its loop closes;
-#  6. MRPT's icp-slam on the valley rawlog: time and ATE.
+#  6. MRPT's icp-slam on the valley rawlog: time and ATE;
+#  7. MRPT's driving_in_office_obs.rawlog from CARMEN_DIR (no ground truth), laser only and
+#     with odometry: each scan's motion against the log's odometry (scripts/odometry-steps.py;
+#     needs rawlog-edit from mrpt-apps, and python3).
 # Usage: scripts/bench-valley.sh [CARMEN_DIR]   (default ../shared/datasets); writes out/bench-valley/
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -103,4 +106,22 @@ if command -v icp-slam > /dev/null; then
   echo "swslam (deterministic, one core): $(field 'Sensor time' "$out/valley-det/summary.md"), ATE $(field 'ATE (rmse)' "$out/valley-det/summary.md")"
 else
   echo "icp-slam not found (apt-get install mrpt-apps)"
+fi
+
+echo "== 7. MRPT office rawlog: per-scan motion against the log's odometry"
+office=$carmen_dir/driving_in_office_obs.rawlog
+if [[ -f $office ]] && command -v rawlog-edit > /dev/null && command -v python3 > /dev/null; then
+  work=$out/office
+  mkdir -p "$work"
+  # rawlog-edit 2.5 writes its export beside its input, dropping the directory's last slash:
+  # run it on a copy in the folder itself.
+  cp "$office" "$work/office.rawlog"
+  (cd "$work" && rawlog-edit -q -i office.rawlog --export-odometry-txt > /dev/null 2>&1)
+  for mode in laser-only odometry; do
+    flag=(); [[ $mode == laser-only ]] && flag=(--no-odometry)
+    "$bin/swslam" -c $cfg -i "$office" -o "$work/$mode" -d -q --no-render "${flag[@]}" > /dev/null 2>&1 || true
+    echo "$mode: $(python3 scripts/odometry-steps.py "$work/$mode/trajectory.tum" "$work/office_odometry.txt"), travelled $(field 'Travelling distance' "$work/$mode/summary.md")"
+  done
+else
+  echo "skipped: needs $office, rawlog-edit (apt-get install mrpt-apps) and python3"
 fi
