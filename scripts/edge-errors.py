@@ -22,26 +22,7 @@ import bisect
 import math
 import sys
 
-
-class InputError(Exception):
-    pass
-
-
-def read_tum(path):
-    """[(t, x, y, theta)] of a TUM file (planar: theta from the quaternion's z and w)."""
-    out = []
-    with open(path) as f:
-        for n, line in enumerate(f, 1):
-            s = line.strip()
-            if not s or s.startswith("#"):
-                continue
-            v = s.split()
-            try:
-                t, x, y, _, _, _, qz, qw = map(float, v)
-            except ValueError:
-                raise InputError(f"{path}:{n}: expected 8 numbers (t x y z qx qy qz qw)")
-            out.append((t, x, y, 2 * math.atan2(qz, qw)))
-    return out
+from planar_poses import InputError, read_poses
 
 
 def read_edges(path):
@@ -128,8 +109,8 @@ def main(argv):
     ap.add_argument("--list", action="store_true")
     args = ap.parse_args(argv)
     try:
-        keyframes = read_tum(f"{args.run_dir}/keyframes.tum")
-        truth = node_truth(keyframes, read_tum(args.gt))
+        keyframes = read_poses(f"{args.run_dir}/keyframes.tum")
+        truth = node_truth(keyframes, read_poses(args.gt))
         errors = edge_errors(read_edges(f"{args.run_dir}/graph.graph"), truth)
     except (InputError, OSError) as e:
         print(f"edge-errors: {e}", file=sys.stderr)

@@ -25,34 +25,12 @@ import bisect
 import math
 import sys
 
-
-class InputError(Exception):
-    pass
+from planar_poses import InputError, read_poses
 
 
-def read_poses(path):
-    """[(t, x, y, theta)] of a TUM file or of rawlog-edit's odometry export."""
-    out = []
-    with open(path) as f:
-        for n, line in enumerate(f, 1):
-            s = line.strip()
-            if not s or s.startswith("#") or s.startswith("%"):
-                continue
-            v = s.split()
-            try:
-                if len(v) == 8:  # TUM: t x y z qx qy qz qw
-                    t, x, y, _, _, _, qz, qw = map(float, v)
-                    th = 2 * math.atan2(qz, qw)
-                elif len(v) >= 4:  # rawlog-edit: t x y phi ...
-                    t, x, y, th = map(float, v[:4])
-                else:
-                    raise ValueError
-            except ValueError:
-                raise InputError(f"{path}:{n}: expected 'time x y z qx qy qz qw' (TUM) or "
-                                 f"'time x y phi ...' (rawlog-edit odometry), got: {s[:80]}")
-            if not all(math.isfinite(a) for a in (t, x, y, th)):
-                raise InputError(f"{path}:{n}: a value is not finite")
-            out.append((t, x, y, th))
+def read_odometry(path):
+    """The odometry's poses; none is an error."""
+    out = read_poses(path, odometry_txt=True)
     if not out:
         raise InputError(f"{path}: no poses")
     return out
@@ -116,7 +94,7 @@ def main():
     ap.add_argument("--list", action="store_true")
     args = ap.parse_args()
     try:
-        errors = step_errors(read_poses(args.est), read_poses(args.odometry))
+        errors = step_errors(read_odometry(args.est), read_odometry(args.odometry))
     except (InputError, OSError) as e:
         print(f"odometry-steps: {e}", file=sys.stderr)
         return 1
