@@ -38,6 +38,7 @@ TEST(MotionPrediction, ScaleOneTwoAndZero)
     expectPose(scaledMotion(m, 2), m + m, 1e-12, "s = 2");
     expectPose(scaledMotion(m, 3), m + m + m, 1e-12, "s = 3");
     expectPose(scaledMotion(m, 0), CPose2D(), 1e-15, "s = 0");
+    expectPose(scaledMotion(m, -1), -m, 1e-12, "s = -1");
     const CPose2D half = scaledMotion(m, 0.5);
     expectPose(half + half, m, 1e-12, "s = 1/2 twice");
   }

@@ -1,5 +1,6 @@
 // Reading a run's input: odometry increments between scans, sensor selection, both formats.
 #include <swslam/system/scan_source.h>
+#include <swslam/tracking/motion_prediction.h>
 
 #include <gtest/gtest.h>
 
@@ -22,6 +23,56 @@ TEST(OdometryIntegrator, AbsoluteReadingsBecomeIncrementsInTheVehicleFrame)
   const auto still = odo.takeIncrement();
   ASSERT_TRUE(still);
   EXPECT_NEAR(still->norm(), 0, 1e-12);
+}
+
+TEST(OdometryIntegrator, ReadingsAreAlignedWithTheScanTimes)
+{
+  // 10 Hz readings along an arc at a constant twist; scans 0.066 s and 0.134 s apart in turn
+  // (as in MRPT's office rawlog): each increment is the motion between the scans themselves.
+  const CPose2D per_second(1.0, 0.0, 0.5);
+  auto at = [&](double t) { return scaledMotion(per_second, t); };
+  auto stamp = [](double t) { return mrpt::Clock::fromDouble(100 + t); };
+  OdometryIntegrator odo;
+  double next_reading = 0, scan = 0.13;  // two readings before the first scan
+  for (int k = 0; k < 20; k++)
+  {
+    while (next_reading <= scan)
+    {
+      odo.addReading(at(next_reading), stamp(next_reading));
+      next_reading += 0.1;
+    }
+    const auto inc = odo.takeIncrement(stamp(scan));
+    const double interval = k % 2 ? 0.134 : 0.066;
+    if (k > 0)
+    {
+      ASSERT_TRUE(inc);
+      const CPose2D truth = at(scan) - at(scan - (k % 2 ? 0.066 : 0.134));
+      EXPECT_NEAR(inc->x(), truth.x(), 1e-9) << k;
+      EXPECT_NEAR(inc->y(), truth.y(), 1e-9) << k;
+      EXPECT_NEAR(inc->phi(), truth.phi(), 1e-9) << k;
+    }
+    scan += interval;
+  }
+}
+
+TEST(OdometryIntegrator, ExtrapolatesNoFartherThanOneReadingInterval)
+{
+  OdometryIntegrator odo;
+  auto stamp = [](double t) { return mrpt::Clock::fromDouble(100 + t); };
+  odo.addReading(CPose2D(0, 0, 0), stamp(0.0));
+  odo.addReading(CPose2D(0.1, 0, 0), stamp(0.1));
+  EXPECT_FALSE(odo.takeIncrement(stamp(0.1)));  // the first scan
+  // Odometry stopped arriving: 1 s later the scan gets one more interval's motion, not ten.
+  const auto inc = odo.takeIncrement(stamp(1.1));
+  ASSERT_TRUE(inc);
+  EXPECT_NEAR(inc->x(), 0.1, 1e-12);
+  // Without reading times the last reading is taken as it is.
+  OdometryIntegrator untimed;
+  untimed.addReading(CPose2D(0, 0, 0));
+  untimed.addReading(CPose2D(0.1, 0, 0));
+  EXPECT_FALSE(untimed.takeIncrement(stamp(0.5)));
+  untimed.addReading(CPose2D(0.3, 0, 0));
+  EXPECT_NEAR(untimed.takeIncrement(stamp(0.9))->x(), 0.2, 1e-12);
 }
 
 TEST(OdometryIntegrator, ActionsAccumulateUntilTheNextScan)

@@ -3,6 +3,11 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
+#include "swslam/tracking/motion_prediction.h"
+
+#include <mrpt/system/datetime.h>
+
+#include <algorithm>
 #include <iostream>
 
 namespace swslam
@@ -11,7 +16,11 @@ using mrpt::obs::CObservation2DRangeScan;
 using mrpt::obs::CObservationOdometry;
 using mrpt::poses::CPose2D;
 
-void OdometryIntegrator::addReading(const CPose2D& odometry) { last_reading_ = odometry; }
+void OdometryIntegrator::addReading(const CPose2D& odometry, mrpt::Clock::time_point t)
+{
+  previous_reading_ = last_reading_;
+  last_reading_ = Reading{odometry, t};
+}
 
 void OdometryIntegrator::addIncrement(const CPose2D& increment)
 {
@@ -19,14 +28,28 @@ void OdometryIntegrator::addIncrement(const CPose2D& increment)
   has_actions_ = true;
 }
 
-std::optional<CPose2D> OdometryIntegrator::takeIncrement()
+CPose2D OdometryIntegrator::readingAt(mrpt::Clock::time_point t) const
+{
+  const Reading& last = *last_reading_;
+  const mrpt::Clock::time_point unknown{};
+  if (!previous_reading_ || t == unknown || last.time == unknown || previous_reading_->time == unknown)
+    return last.pose;
+  const double interval = mrpt::system::timeDifference(previous_reading_->time, last.time);
+  if (!(interval > 0)) return last.pose;
+  const double s = std::clamp(mrpt::system::timeDifference(last.time, t) / interval, -1.0, 1.0);
+  return last.pose + scaledMotion(last.pose - previous_reading_->pose, s);
+}
+
+std::optional<CPose2D> OdometryIntegrator::takeIncrement(mrpt::Clock::time_point scan_time)
 {
   std::optional<CPose2D> inc;
+  std::optional<CPose2D> at_scan;
+  if (last_reading_) at_scan = readingAt(scan_time);
   if (has_actions_)
     inc = accumulated_;
-  else if (last_reading_ && reading_at_scan_)
-    inc = *last_reading_ - *reading_at_scan_;  // reading_at_scan^-1 (+) last_reading
-  reading_at_scan_ = last_reading_;
+  else if (at_scan && reading_at_scan_)
+    inc = *at_scan - *reading_at_scan_;  // reading_at_scan^-1 (+) at_scan
+  reading_at_scan_ = at_scan;
   accumulated_ = CPose2D();
   has_actions_ = false;
   return inc;
@@ -54,14 +77,14 @@ class SourceBase : public ScanSource
         return false;
       }
       out.observation = scan;
-      out.odometry_increment = odometry_.takeIncrement();
+      out.odometry_increment = odometry_.takeIncrement(scan->timestamp);
       if (!opts_.use_odometry) out.odometry_increment.reset();
       stats_.scans++;
       return true;
     }
     if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obs))
     {
-      odometry_.addReading(odo->odometry);
+      odometry_.addReading(odo->odometry, odo->timestamp);
       stats_.odometry++;
       return false;
     }

@@ -7,6 +7,9 @@
 #include <swslam/rawlog_reader.h>
 #include <swslam/system/messages.h>
 
+#include <mrpt/core/Clock.h>
+#include <mrpt/poses/CPose2D.h>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,21 +49,34 @@ class ScanSource
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
                                            const CarmenParams& carmen);
 
-/** Turns odometry readings between scans into per-scan increments. */
+/** Turns odometry readings between scans into per-scan increments. Absolute readings are
+ * aligned with the scans' times: the odometry at a scan is extrapolated (or interpolated)
+ * from the last two readings at their constant velocity, by at most one reading interval, so
+ * odometry and scans at different rates give the motion between the scans themselves. */
 class OdometryIntegrator
 {
  public:
-  /** An absolute odometry reading (CObservationOdometry). */
-  void addReading(const mrpt::poses::CPose2D& odometry);
+  /** An absolute odometry reading (CObservationOdometry) taken at `t` (default: unknown). */
+  void addReading(const mrpt::poses::CPose2D& odometry, mrpt::Clock::time_point t = {});
   /** A relative motion (rawlog action). */
   void addIncrement(const mrpt::poses::CPose2D& increment);
   /** The motion since the previous call (nothing if no odometry arrived in between or
-   * before the previous scan); starts a new interval. */
-  std::optional<mrpt::poses::CPose2D> takeIncrement();
+   * before the previous scan); starts a new interval. `scan_time` (default: unknown) aligns
+   * absolute readings with the scan. */
+  std::optional<mrpt::poses::CPose2D> takeIncrement(mrpt::Clock::time_point scan_time = {});
 
  private:
-  std::optional<mrpt::poses::CPose2D> last_reading_;   ///< latest absolute reading
-  std::optional<mrpt::poses::CPose2D> reading_at_scan_;  ///< absolute reading at the last scan
+  /** The odometry at time t from the last readings (the last one if t or their times are
+   * unknown). */
+  mrpt::poses::CPose2D readingAt(mrpt::Clock::time_point t) const;
+
+  struct Reading
+  {
+    mrpt::poses::CPose2D pose;
+    mrpt::Clock::time_point time;
+  };
+  std::optional<Reading> last_reading_, previous_reading_;
+  std::optional<mrpt::poses::CPose2D> reading_at_scan_;  ///< odometry at the last scan
   mrpt::poses::CPose2D accumulated_;  ///< actions since the last scan
   bool has_actions_ = false;
 };

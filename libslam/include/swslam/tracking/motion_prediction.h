@@ -9,7 +9,7 @@ namespace swslam
 {
 /** exp(s log(m)) in SE(2): the motion at the same constant twist (forward, lateral and
  * angular velocity) held s times as long. s = 1 gives m, s = 2 gives m (+) m, s = 0 the
- * identity; any s >= 0. */
+ * identity, s = -1 the inverse motion; any real s. */
 mrpt::poses::CPose2D scaledMotion(const mrpt::poses::CPose2D& m, double s);
 
 /** dt_now / dt_prev, the scale of the previous motion for the next scan, clamped to
