@@ -1,6 +1,7 @@
 #include "swslam/rawlog_reader.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include <mrpt/core/exceptions.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -9,6 +10,27 @@
 
 namespace swslam
 {
+namespace
+{
+/** MRPT's exception text without its call-stack backtraces: the "Message:" lines of the
+ * nested exceptions, outermost first (or the whole text if it has none). */
+std::string mrptMessages(const std::exception& e)
+{
+  const std::string text = mrpt::exception_to_str(e);
+  std::istringstream lines(text);
+  std::string line, out;
+  const std::string tag = "Message:";
+  while (std::getline(lines, line))
+  {
+    if (line.compare(0, tag.size(), tag) != 0) continue;
+    const size_t start = line.find_first_not_of(' ', tag.size());
+    if (start == std::string::npos) continue;
+    out += (out.empty() ? "" : ": ") + line.substr(start);
+  }
+  return out.empty() ? text : out;
+}
+}  // namespace
+
 RawlogReader::RawlogReader(const std::string& path) : path_(path)
 {
   bool opened = false;
@@ -42,7 +64,7 @@ bool RawlogReader::next(RawlogItem& item)
       if (file_.getPosition() == pos_before && file_.checkEOF()) return false;
       throw RawlogError("rawlog '" + path_ + "': corrupt or truncated entry #" +
                             std::to_string(entries_) + " (at byte " + std::to_string(pos_before) +
-                            "): " + mrpt::exception_to_str(e),
+                            "): " + mrptMessages(e),
                         entries_);
     }
     entries_++;
