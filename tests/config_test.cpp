@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 using namespace swslam;
 
@@ -118,4 +121,42 @@ TEST(Config, InlineCommentIsAnErrorNotASilentFalse)
 {
   mrpt::config::CConfigFileMemory cfg("[plicp]\nremove_doubles = true   # keep one\n");
   EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+TEST(Config, AValueNotOfItsKeysKindIsAnErrorNotASilentZero)
+{
+  // MRPT reads numbers with atoi/atof and booleans with atoi: each of these loaded silently.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"plicp", "coarse_start_fraction = abc"},  // a number read as 0
+      {"plicp", "min_segment_length = 0.3 0.4"},  // read as 0.3
+      {"plicp", "max_iterations = 2.5"},         // an integer read as 2
+      {"plicp", "max_iterations = 1e3"},         // read as 1
+      {"plicp", "max_iterations = 99999999999"},  // overflows an int
+      {"plicp", "remove_doubles = 0x10"},        // a boolean read as false
+      {"plicp", "remove_doubles = maybe"},
+      {"plicp", "epsilon_xy = nan"},
+      {"plicp", "epsilon_xy ="},                 // no value
+  };
+  for (const auto& [section, line] : bad)
+  {
+    mrpt::config::CConfigFileMemory cfg("[" + section + "]\n" + line + "\n");
+    try
+    {
+      loadSystemParams(cfg);
+      ADD_FAILURE() << line << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      const std::string key = line.substr(0, line.find(' '));
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  // Every spelling MRPT reads as meant still loads, and -inf is a valid kernel shape.
+  mrpt::config::CConfigFileMemory good(
+      "[plicp]\nmax_iterations = 12\nremove_doubles = no\nepsilon_xy = 1e-4\n"
+      "[graph_optimizer]\nkernel_alpha = -inf\n");
+  const SystemParams p = loadSystemParams(good);
+  EXPECT_EQ(p.plicp.max_iterations, 12);
+  EXPECT_FALSE(p.plicp.remove_doubles);
+  EXPECT_TRUE(std::isinf(p.graph_optimizer.kernel_alpha));
 }

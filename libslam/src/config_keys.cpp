@@ -4,6 +4,10 @@
 #include <mrpt/system/string_utils.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace swslam
@@ -16,6 +20,57 @@ std::string joined(const std::vector<std::string>& v)
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
   return s;
 }
+
+enum class ValueKind { Bool, Integer, Number, Text };
+
+/** The kind of a key, from the text saveToConfigFile() writes for its default (MRPT writes
+ * a bool as true/false, an integer with %i, a floating-point number with %f or %e). */
+ValueKind kindOf(std::string saved)
+{
+  saved = mrpt::system::trim(saved.substr(0, saved.find("//")));  // MRPT appends " // comment"
+  const std::string lower = mrpt::system::lowerCase(saved);
+  if (lower == "true" || lower == "false") return ValueKind::Bool;
+  if (saved.empty()) return ValueKind::Text;
+  char* end = nullptr;
+  std::strtol(saved.c_str(), &end, 10);
+  if (*end == '\0') return ValueKind::Integer;
+  std::strtod(saved.c_str(), &end);
+  if (*end == '\0') return ValueKind::Number;
+  return ValueKind::Text;
+}
+
+/** Empty unless `value` is not one MRPT's reader takes at face value for that kind (its
+ * atoi/atof read "abc" as 0, "1 2" as 1, "2.5" as 2 for an integer, all silently). */
+std::string valueProblem(ValueKind kind, const std::string& value)
+{
+  if (value.empty()) return "has no value";
+  char* end = nullptr;
+  switch (kind)
+  {
+    case ValueKind::Bool:
+    {
+      const std::string v = mrpt::system::lowerCase(value);
+      for (const char* ok : {"true", "false", "yes", "no", "1", "0"})
+        if (v == ok) return {};
+      return "is not a boolean (true or false)";
+    }
+    case ValueKind::Integer:
+    {
+      errno = 0;
+      const long v = std::strtol(value.c_str(), &end, 10);
+      if (*end != '\0' || errno == ERANGE || v < INT_MIN || v > INT_MAX) return "is not an integer";
+      return {};
+    }
+    case ValueKind::Number:
+    {
+      const double v = std::strtod(value.c_str(), &end);
+      if (*end != '\0' || std::isnan(v)) return "is not a number";
+      return {};
+    }
+    case ValueKind::Text: return {};
+  }
+  return {};
+}
 }  // namespace
 
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
@@ -27,14 +82,15 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
   known_cfg.getAllKeys(section, known);
   cfg.getAllKeys(section, present);
   // MRPT pads names when it writes commented keys: compare trimmed names.
+  const std::vector<std::string> known_padded = known;
   for (auto& k : known) k = mrpt::system::trim(k);
   for (const auto& padded_key : present)
   {
     const std::string key = mrpt::system::trim(padded_key);
-    const bool ok = std::any_of(known.begin(), known.end(), [&](const std::string& k) {
+    const auto it = std::find_if(known.begin(), known.end(), [&](const std::string& k) {
       return mrpt::system::strCmpI(k, key);
     });
-    if (!ok)
+    if (it == known.end())
       throw std::invalid_argument("config: unknown key '" + key + "' in section [" + section +
                                   "]; known keys: " + joined(known));
     // MRPT's reader keeps the rest of the line in the value: "true  # note" would read as
@@ -44,6 +100,10 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
         value.find(" ;") != std::string::npos)
       throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value +
                                   "': comments must be on a line of their own");
+    const std::string problem =
+        valueProblem(kindOf(known_cfg.read_string(section, known_padded[it - known.begin()], "")), value);
+    if (!problem.empty())
+      throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value + "' " + problem);
   }
 }
 
