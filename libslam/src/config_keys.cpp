@@ -4,8 +4,6 @@
 #include <mrpt/system/string_utils.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -21,10 +19,11 @@ std::string joined(const std::vector<std::string>& v)
   return s;
 }
 
-enum class ValueKind { Bool, Integer, Number, Text };
+enum class ValueKind { Bool, Number, Text };
 
-/** The kind of a key, from the text saveToConfigFile() writes for its default (MRPT writes
- * a bool as true/false, an integer with %i, a floating-point number with %f or %e). */
+/** The kind of a key, from the text saveToConfigFile() writes for its default: true/false, a
+ * number, or other text. (Integers cannot be told from floating-point numbers this way: some
+ * savers write 2.0 as "2".) */
 ValueKind kindOf(std::string saved)
 {
   saved = mrpt::system::trim(saved.substr(0, saved.find("//")));  // MRPT appends " // comment"
@@ -32,19 +31,15 @@ ValueKind kindOf(std::string saved)
   if (lower == "true" || lower == "false") return ValueKind::Bool;
   if (saved.empty()) return ValueKind::Text;
   char* end = nullptr;
-  std::strtol(saved.c_str(), &end, 10);
-  if (*end == '\0') return ValueKind::Integer;
   std::strtod(saved.c_str(), &end);
-  if (*end == '\0') return ValueKind::Number;
-  return ValueKind::Text;
+  return *end == '\0' ? ValueKind::Number : ValueKind::Text;
 }
 
 /** Empty unless `value` is not one MRPT's reader takes at face value for that kind (its
- * atoi/atof read "abc" as 0, "1 2" as 1, "2.5" as 2 for an integer, all silently). */
+ * atoi/atof read "abc" as 0 and "1 2" as 1, and a boolean "0x10" as false, all silently). */
 std::string valueProblem(ValueKind kind, const std::string& value)
 {
   if (value.empty()) return "has no value";
-  char* end = nullptr;
   switch (kind)
   {
     case ValueKind::Bool:
@@ -54,15 +49,9 @@ std::string valueProblem(ValueKind kind, const std::string& value)
         if (v == ok) return {};
       return "is not a boolean (true or false)";
     }
-    case ValueKind::Integer:
-    {
-      errno = 0;
-      const long v = std::strtol(value.c_str(), &end, 10);
-      if (*end != '\0' || errno == ERANGE || v < INT_MIN || v > INT_MAX) return "is not an integer";
-      return {};
-    }
     case ValueKind::Number:
     {
+      char* end = nullptr;
       const double v = std::strtod(value.c_str(), &end);
       if (*end != '\0' || std::isnan(v)) return "is not a number";
       return {};

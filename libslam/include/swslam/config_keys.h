@@ -13,9 +13,9 @@ namespace swslam
 {
 /** Throws std::invalid_argument if `section` of `cfg` holds a key that
  * `params.saveToConfigFile()` does not write (i.e. a key the struct does not know), or a
- * value that is empty or not of its key's kind (a boolean: true/false/yes/no/1/0; an
- * integer; a number, +-inf allowed, not NaN), since MRPT's reader would take such a value
- * silently as 0 or as its leading part. Ranges are each struct's own check. */
+ * value that is empty or not of its key's kind (a boolean: true/false/yes/no/1/0; a
+ * number: the whole value, +-inf allowed, not NaN), since MRPT's reader would take such a
+ * value silently as 0 or as its leading part. Ranges are each struct's own check. */
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                     const mrpt::config::CLoadableOptions& params);
 
