@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <utility>
 #include <vector>
 
@@ -157,4 +158,33 @@ TEST(Config, AValueNotOfItsKeysKindIsAnErrorNotASilentZero)
   EXPECT_EQ(p.plicp.max_iterations, 12);
   EXPECT_FALSE(p.plicp.remove_doubles);
   EXPECT_TRUE(std::isinf(p.graph_optimizer.kernel_alpha));
+}
+
+TEST(Config, AStrayLineOrARepeatedKeyIsAnErrorNamingTheLine)
+{
+  // MRPT's reader skipped a line without '=' and kept one of two settings of a key, silently.
+  const std::string dir = std::filesystem::temp_directory_path() / "swslam_config_lines";
+  std::filesystem::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"[plicp]\nmax_iterations = 12\n# note\nmax_correspondence_dist 2\n", "line 4: 'max_correspondence_dist 2'"},
+      {"[plicp]\n= 5\n", "line 2"},
+      {"[plicp]\nmax_iterations = 12\n\nMax_Iterations = 40\n", "line 4: key 'Max_Iterations' of [plicp] is set again (first on line 2)"},
+  };
+  for (const auto& [text, expected] : bad)
+  {
+    std::ofstream(dir + "/bad.ini") << text;
+    try
+    {
+      loadSystemParams(dir + "/bad.ini");
+      ADD_FAILURE() << text << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  // The same key in two sections is two keys.
+  std::ofstream(dir + "/ok.ini") << "[plicp]\nmax_iterations = 12\n[graph_optimizer]\nmax_iterations = 50\n";
+  EXPECT_EQ(loadSystemParams(dir + "/ok.ini").plicp.max_iterations, 12);
+  std::filesystem::remove_all(dir);
 }

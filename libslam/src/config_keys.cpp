@@ -4,6 +4,8 @@
 #include <mrpt/system/string_utils.h>
 
 #include <algorithm>
+#include <map>
+#include <sstream>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -93,6 +95,33 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
         valueProblem(kindOf(known_cfg.read_string(section, known_padded[it - known.begin()], "")), value);
     if (!problem.empty())
       throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value + "' " + problem);
+  }
+}
+
+void checkIniLines(const std::string& text, const std::string& source)
+{
+  std::map<std::string, size_t> seen;  // "section\nkey" (lower case) -> line
+  std::string section;
+  std::istringstream in(text);
+  std::string raw;
+  for (size_t line = 1; std::getline(in, raw); ++line)
+  {
+    const std::string l = mrpt::system::trim(raw);
+    if (l.empty() || l[0] == '#' || l[0] == ';') continue;
+    const std::string where = "config: '" + source + "' line " + std::to_string(line) + ": ";
+    if (l.front() == '[' && l.back() == ']' && l.size() > 2)
+    {
+      section = mrpt::system::lowerCase(mrpt::system::trim(l.substr(1, l.size() - 2)));
+      continue;
+    }
+    const size_t eq = l.find('=');
+    const std::string key = eq == std::string::npos ? "" : mrpt::system::trim(l.substr(0, eq));
+    if (key.empty() || key.find_first_of("[]") != std::string::npos)
+      throw std::invalid_argument(where + "'" + l + "' is neither '[section]' nor 'key = value'");
+    const auto [at, fresh] = seen.emplace(section + "\n" + mrpt::system::lowerCase(key), line);
+    if (!fresh)
+      throw std::invalid_argument(where + "key '" + key + "' of [" + section + "] is set again (first on line " +
+                                  std::to_string(at->second) + ")");
   }
 }
 

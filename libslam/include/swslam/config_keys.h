@@ -19,6 +19,11 @@ namespace swslam
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                     const mrpt::config::CLoadableOptions& params);
 
+/** Throws std::invalid_argument naming `source` and the line if a line of the .ini `text` is
+ * neither blank, a comment (# or ;), '[section]' nor 'key = value' (MRPT's reader skips such
+ * lines silently), or sets a key its section already set (MRPT keeps one, silently). */
+void checkIniLines(const std::string& text, const std::string& source);
+
 /** Throws std::invalid_argument if `cfg` has a section not in `allowed`. */
 void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,
                         const std::vector<std::string>& allowed);
