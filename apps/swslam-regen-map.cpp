@@ -26,7 +26,11 @@ int main(int argc, char** argv)
     swslam::SystemParams params = swslam::loadSystemParams(config.getValue());
     if (resolution.isSet()) params.map.resolution = resolution.getValue();
     swslam::RunResults run_data;
-    run_data.graph = swslam::loadGraph(run.getValue() + "/graph.graph");
+    swslam::GraphLoadReport load;
+    run_data.graph = swslam::loadGraph(run.getValue() + "/graph.graph", &load);
+    for (size_t k = 0; k < load.skipped_lines; ++k)
+      std::cerr << "swslam-regen-map: graph.graph line " << load.skipped_line_numbers[k]
+                << " skipped: " << load.skip_reasons[k] << "\n";
     run_data.keyframes = swslam::readTum(run.getValue() + "/keyframes.tum");
     run_data.trajectory = run_data.keyframes;
     swslam::RegenReport report;

@@ -10,7 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <utility>
+#include <vector>
 
 using namespace swslam;
 
@@ -118,4 +122,69 @@ TEST(Config, InlineCommentIsAnErrorNotASilentFalse)
 {
   mrpt::config::CConfigFileMemory cfg("[plicp]\nremove_doubles = true   # keep one\n");
   EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+TEST(Config, AValueNotOfItsKeysKindIsAnErrorNotASilentZero)
+{
+  // MRPT reads numbers with atoi/atof and booleans with atoi: each of these loaded silently.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"plicp", "coarse_start_fraction = abc"},  // a number read as 0
+      {"plicp", "min_segment_length = 0.3 0.4"},  // read as 0.3
+      {"plicp", "max_iterations = 12abc"},      // read as 12
+      {"plicp", "remove_doubles = 0x10"},        // a boolean read as false
+      {"plicp", "remove_doubles = maybe"},
+      {"plicp", "epsilon_xy = nan"},
+      {"plicp", "epsilon_xy ="},                 // no value
+  };
+  for (const auto& [section, line] : bad)
+  {
+    mrpt::config::CConfigFileMemory cfg("[" + section + "]\n" + line + "\n");
+    try
+    {
+      loadSystemParams(cfg);
+      ADD_FAILURE() << line << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      const std::string key = line.substr(0, line.find(' '));
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  // Every spelling MRPT reads as meant still loads, and -inf is a valid kernel shape.
+  mrpt::config::CConfigFileMemory good(
+      "[plicp]\nmax_iterations = 12\nremove_doubles = no\nepsilon_xy = 1e-4\n"
+      "[graph_optimizer]\nkernel_alpha = -inf\n");
+  const SystemParams p = loadSystemParams(good);
+  EXPECT_EQ(p.plicp.max_iterations, 12);
+  EXPECT_FALSE(p.plicp.remove_doubles);
+  EXPECT_TRUE(std::isinf(p.graph_optimizer.kernel_alpha));
+}
+
+TEST(Config, AStrayLineOrARepeatedKeyIsAnErrorNamingTheLine)
+{
+  // MRPT's reader skipped a line without '=' and kept one of two settings of a key, silently.
+  const std::string dir = std::filesystem::temp_directory_path() / "swslam_config_lines";
+  std::filesystem::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"[plicp]\nmax_iterations = 12\n# note\nmax_correspondence_dist 2\n", "line 4: 'max_correspondence_dist 2'"},
+      {"[plicp]\n= 5\n", "line 2"},
+      {"[plicp]\nmax_iterations = 12\n\nMax_Iterations = 40\n", "line 4: key 'Max_Iterations' of [plicp] is set again (first on line 2)"},
+  };
+  for (const auto& [text, expected] : bad)
+  {
+    std::ofstream(dir + "/bad.ini") << text;
+    try
+    {
+      loadSystemParams(dir + "/bad.ini");
+      ADD_FAILURE() << text << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  // The same key in two sections is two keys.
+  std::ofstream(dir + "/ok.ini") << "[plicp]\nmax_iterations = 12\n[graph_optimizer]\nmax_iterations = 50\n";
+  EXPECT_EQ(loadSystemParams(dir + "/ok.ini").plicp.max_iterations, 12);
+  std::filesystem::remove_all(dir);
 }

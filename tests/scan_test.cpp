@@ -1,6 +1,8 @@
 #include <swslam/scan.h>
 
 #include <gtest/gtest.h>
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/poses/CPose3D.h>
 
 #include <cmath>
 #include <limits>
@@ -105,4 +107,26 @@ TEST(Scan, AllInvalidGivesEmptyScan)
   const auto s = scanFromObservation(o);
   EXPECT_TRUE(s.empty());
   EXPECT_EQ(s.rejected.total(), 20u);
+}
+
+TEST(Scan, RejectsASensorPoseThatIsNotFinite)
+{
+  // A corrupt rawlog entry can carry a NaN in the sensor pose's translation or rotation.
+  for (int entry : {3, 0})  // x, then the rotation's first entry
+  {
+    auto o = makeObs(10, M_PI);
+    auto m = o.sensorPose.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>();
+    m(0, entry) = std::numeric_limits<double>::quiet_NaN();
+    o.sensorPose = mrpt::poses::CPose3D(m);
+    try
+    {
+      swslam::checkObservationGeometry(o);
+      FAIL() << "entry " << entry;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("sensor pose"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(scanFromObservation(o), std::invalid_argument);
+  }
 }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -237,4 +239,60 @@ TEST(SlamSystem, FinalRefinementLinksCloseUnlinkedNodesOfTheCircuit)
     const double d = (res.graph.pose(e.from).translation() - res.graph.pose(e.to).translation()).norm();
     EXPECT_LT(d, p.loop_closure.max_distance + 0.5);
   }
+}
+
+TEST(SlamSystem, AnOdometryIncrementThatIsNotFiniteIsDroppedNotPropagated)
+{
+  // One NaN odometry reading in a rawlog made every later pose NaN, with a clean exit.
+  for (const RunMode mode : {RunMode::Deterministic, RunMode::Threaded})
+  {
+    SlamSystem slam(defaultParams(), mode);
+    test::World world = test::roomWorld();
+    std::mt19937 rng(4);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (int k = 0; k < 12; k++)
+    {
+      const CPose2D pose(0.05 * k, 0, 0);
+      std::optional<CPose2D> odometry = CPose2D(0.05, 0, 0);
+      if (k == 5) odometry = CPose2D(nan, 0, 0);
+      if (k == 6) odometry = CPose2D(0.05, 0, std::numeric_limits<double>::infinity());
+      const FeedResult r = slam.feed({scanAt(world, pose, 10.0 + 0.1 * k, rng), odometry});
+      EXPECT_TRUE(r.ok()) << r.message;
+      if (k == 5 || k == 6)
+      {
+        EXPECT_EQ(r.status, FeedStatus::OdometryDropped);
+        EXPECT_NE(r.message.find("not finite"), std::string::npos) << r.message;
+      }
+      else
+        EXPECT_EQ(r.status, FeedStatus::Accepted) << r.message;
+    }
+    slam.finish();
+    EXPECT_EQ(slam.error(), "");
+    const RunResults res = slam.results();
+    ASSERT_EQ(res.trajectory.size(), 12u);
+    for (const StampedPose& p : res.trajectory)
+      ASSERT_TRUE(std::isfinite(p.pose.x()) && std::isfinite(p.pose.y()) && std::isfinite(p.pose.phi()))
+          << "t " << p.t;
+    EXPECT_NEAR(res.trajectory.back().pose.x(), 0.55, 0.05);
+  }
+}
+
+TEST(SlamSystem, AModuleThatFailsInDeterministicModeStopsThePipelineAsInThreadedMode)
+{
+  // An odometry jump of 1000 km: tracking falls back to it, the map refuses the node. The
+  // failure is the map's (not an exception out of feed()), and what came before is kept.
+  SlamSystem slam(defaultParams(), RunMode::Deterministic);
+  test::World world = test::roomWorld();
+  std::mt19937 rng(5);
+  for (int k = 0; k < 4; k++)
+    ASSERT_TRUE(slam.feed({scanAt(world, CPose2D(0.05 * k, 0, 0), 10.0 + 0.1 * k, rng), CPose2D(0.05, 0, 0)}).ok());
+  FeedResult jump;
+  EXPECT_NO_THROW(jump = slam.feed({scanAt(world, CPose2D(0.2, 0, 0), 10.4, rng), CPose2D(1e6, 0, 0)}));
+  EXPECT_NE(slam.error().find("map construction: "), std::string::npos) << slam.error();
+  EXPECT_NE(slam.error().find("bad odometry"), std::string::npos) << slam.error();
+  EXPECT_EQ(slam.feed({scanAt(world, CPose2D(0.2, 0, 0), 10.5, rng), {}}).status, FeedStatus::Stopped);
+  EXPECT_NO_THROW(slam.finish());
+  const RunResults res = slam.results();
+  EXPECT_EQ(res.trajectory.size(), 5u);
+  EXPECT_GE(res.graph.nodeCount(), 1u);
 }

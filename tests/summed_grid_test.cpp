@@ -130,3 +130,28 @@ TEST(SummedGrid, OutsideTheGridTheSumIsZeroAndABadSignIsAnError)
   EXPECT_THROW(grid.add(c, 2), std::invalid_argument);
   EXPECT_THROW(SummedGrid(0, 4, 4), std::invalid_argument);
 }
+
+TEST(SummedGrid, AGrowthBeyondTheCellLimitIsRefusedAndLeavesTheMapAsItWas)
+{
+  // A node whose pose is far off (bad odometry) would grow the map by millions of cells a side.
+  SummedGrid grid(0.2, 4, 4);
+  std::mt19937 rng(5);
+  const ScanContribution near = randomContribution(rng, -5, -5, 10, 10);
+  grid.add(near, +1);
+  const CellBox before = grid.box();
+  const int far = static_cast<int>(swslam::kMaxMapCells / 30);  // 30 cells tall: just over the limit
+  const ScanContribution off = randomContribution(rng, far, -5, 10, 10);
+  try
+  {
+    grid.add(off, +1);
+    FAIL() << "the growth must be refused";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("over the limit"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(grid.box().x1, before.x1);
+  EXPECT_EQ(static_cast<int>(grid.grid().getSizeX()), before.width());
+  grid.add(near, -1);  // still consistent: back to all zero
+  for (auto v : grid.grid().getRawMap()) ASSERT_EQ(v, 0);
+}

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -38,6 +39,25 @@ TEST(TumIo, MalformedLineNamesTheLine)
   {
     EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
   }
+}
+
+TEST(TumIo, AQuaternionThatIsNotUnitIsAnErrorNamingTheLine)
+{
+  // All zeros read as yaw 0, silently; a quaternion written with 4 decimals still loads.
+  const auto dir = swslam::test::tempDir("tum_quat");
+  std::ofstream(dir + "/q.tum") << "0 0 0 0 0 0 0.3827 0.9239\n1 1 0 0 0 0 0 0\n";
+  try
+  {
+    swslam::readTum(dir + "/q.tum");
+    FAIL();
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("line 2: quaternion (0 0 0 0) has norm 0"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir + "/ok.tum") << "0 0 0 0 0 0 0.3827 0.9239\n";
+  EXPECT_NEAR(swslam::readTum(dir + "/ok.tum").at(0).pose.phi(), M_PI / 4, 1e-3);
 }
 
 TEST(AtomicFile, FailedWriterLeavesPreviousFileIntact)

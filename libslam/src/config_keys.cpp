@@ -4,6 +4,10 @@
 #include <mrpt/system/string_utils.h>
 
 #include <algorithm>
+#include <map>
+#include <sstream>
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace swslam
@@ -16,6 +20,48 @@ std::string joined(const std::vector<std::string>& v)
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
   return s;
 }
+
+enum class ValueKind { Bool, Number, Text };
+
+/** The kind of a key, from the text saveToConfigFile() writes for its default: true/false, a
+ * number, or other text. (Integers cannot be told from floating-point numbers this way: some
+ * savers write 2.0 as "2".) */
+ValueKind kindOf(std::string saved)
+{
+  saved = mrpt::system::trim(saved.substr(0, saved.find("//")));  // MRPT appends " // comment"
+  const std::string lower = mrpt::system::lowerCase(saved);
+  if (lower == "true" || lower == "false") return ValueKind::Bool;
+  if (saved.empty()) return ValueKind::Text;
+  char* end = nullptr;
+  std::strtod(saved.c_str(), &end);
+  return *end == '\0' ? ValueKind::Number : ValueKind::Text;
+}
+
+/** Empty unless `value` is not one MRPT's reader takes at face value for that kind (its
+ * atoi/atof read "abc" as 0 and "1 2" as 1, and a boolean "0x10" as false, all silently). */
+std::string valueProblem(ValueKind kind, const std::string& value)
+{
+  if (value.empty()) return "has no value";
+  switch (kind)
+  {
+    case ValueKind::Bool:
+    {
+      const std::string v = mrpt::system::lowerCase(value);
+      for (const char* ok : {"true", "false", "yes", "no", "1", "0"})
+        if (v == ok) return {};
+      return "is not a boolean (true or false)";
+    }
+    case ValueKind::Number:
+    {
+      char* end = nullptr;
+      const double v = std::strtod(value.c_str(), &end);
+      if (*end != '\0' || std::isnan(v)) return "is not a number";
+      return {};
+    }
+    case ValueKind::Text: return {};
+  }
+  return {};
+}
 }  // namespace
 
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
@@ -27,14 +73,15 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
   known_cfg.getAllKeys(section, known);
   cfg.getAllKeys(section, present);
   // MRPT pads names when it writes commented keys: compare trimmed names.
+  const std::vector<std::string> known_padded = known;
   for (auto& k : known) k = mrpt::system::trim(k);
   for (const auto& padded_key : present)
   {
     const std::string key = mrpt::system::trim(padded_key);
-    const bool ok = std::any_of(known.begin(), known.end(), [&](const std::string& k) {
+    const auto it = std::find_if(known.begin(), known.end(), [&](const std::string& k) {
       return mrpt::system::strCmpI(k, key);
     });
-    if (!ok)
+    if (it == known.end())
       throw std::invalid_argument("config: unknown key '" + key + "' in section [" + section +
                                   "]; known keys: " + joined(known));
     // MRPT's reader keeps the rest of the line in the value: "true  # note" would read as
@@ -44,6 +91,37 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
         value.find(" ;") != std::string::npos)
       throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value +
                                   "': comments must be on a line of their own");
+    const std::string problem =
+        valueProblem(kindOf(known_cfg.read_string(section, known_padded[it - known.begin()], "")), value);
+    if (!problem.empty())
+      throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value + "' " + problem);
+  }
+}
+
+void checkIniLines(const std::string& text, const std::string& source)
+{
+  std::map<std::string, size_t> seen;  // "section\nkey" (lower case) -> line
+  std::string section;
+  std::istringstream in(text);
+  std::string raw;
+  for (size_t line = 1; std::getline(in, raw); ++line)
+  {
+    const std::string l = mrpt::system::trim(raw);
+    if (l.empty() || l[0] == '#' || l[0] == ';') continue;
+    const std::string where = "config: '" + source + "' line " + std::to_string(line) + ": ";
+    if (l.front() == '[' && l.back() == ']' && l.size() > 2)
+    {
+      section = mrpt::system::lowerCase(mrpt::system::trim(l.substr(1, l.size() - 2)));
+      continue;
+    }
+    const size_t eq = l.find('=');
+    const std::string key = eq == std::string::npos ? "" : mrpt::system::trim(l.substr(0, eq));
+    if (key.empty() || key.find_first_of("[]") != std::string::npos)
+      throw std::invalid_argument(where + "'" + l + "' is neither '[section]' nor 'key = value'");
+    const auto [at, fresh] = seen.emplace(section + "\n" + mrpt::system::lowerCase(key), line);
+    if (!fresh)
+      throw std::invalid_argument(where + "key '" + key + "' of [" + section + "] is set again (first on line " +
+                                  std::to_string(at->second) + ")");
   }
 }
 

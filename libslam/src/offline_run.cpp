@@ -20,7 +20,7 @@ namespace swslam
 {
 namespace
 {
-/** Prints the first few skip messages of each kind; counts all. */
+/** Prints the first few skip (or dropped-odometry) messages of each kind; counts all. */
 class SkipReporter
 {
  public:
@@ -28,9 +28,9 @@ class SkipReporter
   void report(FeedStatus kind, size_t input_index, const std::string& why)
   {
     const size_t n = ++counts_[kind];
-    if (n <= static_cast<size_t>(max_))
-      err_ << "swslam: skipped input scan " << input_index << ": " << why << "\n";
-    if (n == static_cast<size_t>(max_) + 1) err_ << "swslam: (further skips of this kind are only counted)\n";
+    const char* what = kind == FeedStatus::OdometryDropped ? "input scan " : "skipped input scan ";
+    if (n <= static_cast<size_t>(max_)) err_ << "swslam: " << what << input_index << ": " << why << "\n";
+    if (n == static_cast<size_t>(max_) + 1) err_ << "swslam: (further messages of this kind are only counted)\n";
   }
 
  private:
@@ -83,7 +83,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
       const FeedResult r = slam->feed(std::move(in));
       read++;
       if (r.status == FeedStatus::Stopped) break;
-      if (!r.ok()) skips.report(r.status, read - 1, r.message);
+      if (!r.message.empty()) skips.report(r.status, read - 1, r.message);
       if (!bar.due()) continue;  // the status is gathered only when the bar redraws
       const SystemStatus st = slam->status();
       bar.update(source->fractionRead(), st.scans,

@@ -61,6 +61,14 @@ ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& o
   const double res = params.resolution;
   const double max_range = params.max_insertion_range;
   const mrpt::poses::CPose2D sensor = vehicle_pose + mrpt::poses::CPose2D(obs.sensorPose);
+  const double reach_limit = kMaxMapCellIndex * res / 2;  // the scan's reach stays inside too
+  if (!(std::abs(sensor.x()) < reach_limit && std::abs(sensor.y()) < reach_limit))
+    throw std::invalid_argument("map: the sensor at " + sensor.asString() + " (vehicle pose " +
+                                vehicle_pose.asString() + ", sensor pose " + obs.sensorPose.asString() +
+                                ") is farther than " + std::to_string(reach_limit) +
+                                " m from the origin on an axis (" + std::to_string(kMaxMapCellIndex / 2) +
+                                " cells of " + std::to_string(res) +
+                                " m): a corrupt pose (bad odometry or sensor pose?)");
 
   // Farthest point MRPT may touch: valid rays are cut at max_range, and rays without a
   // return (when they clear space) reach at most max_range too.

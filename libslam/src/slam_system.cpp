@@ -20,6 +20,8 @@ double secondsSince(std::chrono::steady_clock::time_point t0)
 }
 
 void nameThisThread(const char* name) { pthread_setname_np(pthread_self(), name); }
+
+bool isFinite(const CPose2D& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.phi()); }
 }  // namespace
 
 SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
@@ -67,14 +69,35 @@ FeedResult SlamSystem::feed(ScanInput input)
     return skip(FeedStatus::BadGeometry, e.what());
   }
   last_timestamp_ = t;
+  FeedResult result;
+  if (input.odometry_increment && !isFinite(*input.odometry_increment))
+  {
+    result = {FeedStatus::OdometryDropped,
+              "odometry increment " + input.odometry_increment->asString() + " is not finite: ignored"};
+    input.odometry_increment.reset();
+  }
   const size_t index = fed_++;
   if (mode_ == RunMode::Deterministic)
   {
-    trackOne(input, index);
-    return {};
+    if (!guarded("tracking", [&] { trackOne(input, index); })) return {FeedStatus::Stopped, error()};
+    return result;
   }
   if (!scan_queue_.push({index, std::move(input)})) return {FeedStatus::Stopped, "the system has stopped"};
-  return {};
+  return result;
+}
+
+bool SlamSystem::guarded(const char* module, const std::function<void()>& step)
+{
+  try
+  {
+    step();
+    return true;
+  }
+  catch (const std::exception& e)
+  {
+    fail(module, e.what());
+    return false;
+  }
 }
 
 void SlamSystem::trackOne(const ScanInput& input, size_t index)
@@ -121,7 +144,7 @@ void SlamSystem::trackOne(const ScanInput& input, size_t index)
   node.observation = input.observation;
   node.edges = step.edges;
   if (mode_ == RunMode::Deterministic)
-    graphOne(node);
+    guarded("graph optimization", [&] { graphOne(node); });
   else
     node_queue_.push(std::move(node));
 }
@@ -151,7 +174,7 @@ void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
   }
   auto toMap = [this](MapMessage m) {
     if (mode_ == RunMode::Deterministic)
-      mapOne(m);
+      guarded("map construction", [&] { mapOne(m); });
     else
       map_queue_.push(std::move(m));
   };

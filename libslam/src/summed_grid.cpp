@@ -122,6 +122,16 @@ void SummedGrid::growToContain(const CellBox& b)
   if (b.y0 < n.y0) n.y0 = b.y0 - margin_cells_;
   if (b.x1 > n.x1) n.x1 = b.x1 + margin_cells_;
   if (b.y1 > n.y1) n.y1 = b.y1 + margin_cells_;
+  if (static_cast<double>(n.width()) * n.height() > kMaxMapCells)
+  {
+    auto m = [this](int cell) { return std::to_string(cell * resolution_); };
+    throw std::runtime_error("map: a scan over x [" + m(b.x0) + ", " + m(b.x1) + "] y [" + m(b.y0) + ", " +
+                             m(b.y1) + "] m would grow the map from " + std::to_string(box_.width()) + " x " +
+                             std::to_string(box_.height()) + " to " + std::to_string(n.width()) + " x " +
+                             std::to_string(n.height()) + " cells, over the limit of " +
+                             std::to_string(static_cast<long>(kMaxMapCells)) +
+                             ": a pose far from the rest of the map (bad odometry?)");
+  }
 
   // The tiles move to the new index as they are (no sum is copied).
   const CellBox nt = tilesCovering(n);

@@ -5,6 +5,8 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace swslam
@@ -81,8 +83,10 @@ void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase&
 
 SystemParams loadSystemParams(const std::string& ini_path)
 {
-  if (!std::filesystem::is_regular_file(ini_path))
+  std::ifstream in(ini_path);
+  if (!std::filesystem::is_regular_file(ini_path) || !in)
     throw std::invalid_argument("config: cannot read '" + ini_path + "'");
+  checkIniLines(std::string(std::istreambuf_iterator<char>(in), {}), ini_path);
   return loadSystemParams(mrpt::config::CConfigFile(ini_path));
 }
 

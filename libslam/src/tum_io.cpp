@@ -10,9 +10,18 @@ namespace swslam
 {
 std::vector<StampedPose> readTum(const std::string& path)
 {
+  // A quaternion far from unit length is no rotation (all zeros read as yaw 0, silently);
+  // 1% leaves room for files written with few decimals.
+  auto unit_quaternion = [](const std::array<double, 8>& r) -> std::string {
+    const double norm = std::sqrt(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7]);
+    if (std::abs(norm - 1) <= 0.01) return {};
+    char buf[120];
+    std::snprintf(buf, sizeof(buf), "quaternion (%g %g %g %g) has norm %g, not 1", r[4], r[5], r[6], r[7], norm);
+    return buf;
+  };
   std::vector<StampedPose> out;
   for (const auto& [t, x, y, z, qx, qy, qz, qw] :
-       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw"))
+       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw", unit_quaternion))
   {
     const double yaw = std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz));
     out.push_back({t, mrpt::poses::CPose2D(x, y, yaw)});

@@ -1,6 +1,7 @@
 #pragma once
 // Strict loading of parameter structs from .ini files: a key that the struct does
-// not know is an error naming the key, never a silent default.
+// not know, or a value that is not of its key's kind, is an error naming the key, never a
+// silent default.
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
@@ -11,9 +12,17 @@
 namespace swslam
 {
 /** Throws std::invalid_argument if `section` of `cfg` holds a key that
- * `params.saveToConfigFile()` does not write (i.e. a key the struct does not know). */
+ * `params.saveToConfigFile()` does not write (i.e. a key the struct does not know), or a
+ * value that is empty or not of its key's kind (a boolean: true/false/yes/no/1/0; a
+ * number: the whole value, +-inf allowed, not NaN), since MRPT's reader would take such a
+ * value silently as 0 or as its leading part. Ranges are each struct's own check. */
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                     const mrpt::config::CLoadableOptions& params);
+
+/** Throws std::invalid_argument naming `source` and the line if a line of the .ini `text` is
+ * neither blank, a comment (# or ;), '[section]' nor 'key = value' (MRPT's reader skips such
+ * lines silently), or sets a key its section already set (MRPT keeps one, silently). */
+void checkIniLines(const std::string& text, const std::string& source);
 
 /** Throws std::invalid_argument if `cfg` has a section not in `allowed`. */
 void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -13,10 +14,12 @@
 namespace swslam
 {
 /** Reads the rows; throws std::runtime_error "<what>: cannot open '<path>'" or
- * "<what>: '<path>' line L: expected N finite numbers '<format>'". */
+ * "<what>: '<path>' line L: expected N finite numbers '<format>'", or "<what>: '<path>'
+ * line L: <problem>" when `check` (if given) finds a problem with a row's values. */
 template <size_t N>
-std::vector<std::array<double, N>> readNumberRows(const std::string& path, const std::string& what,
-                                                  const std::string& format)
+std::vector<std::array<double, N>> readNumberRows(
+    const std::string& path, const std::string& what, const std::string& format,
+    const std::function<std::string(const std::array<double, N>&)>& check = {})
 {
   std::ifstream f(path);
   if (!f) throw std::runtime_error(what + ": cannot open '" + path + "'");
@@ -36,6 +39,9 @@ std::vector<std::array<double, N>> readNumberRows(const std::string& path, const
     if (!ok || (ss >> rest))
       throw std::runtime_error(what + ": '" + path + "' line " + std::to_string(line_no) +
                                ": expected " + std::to_string(N) + " finite numbers '" + format + "'");
+    if (check)
+      if (const std::string problem = check(row); !problem.empty())
+        throw std::runtime_error(what + ": '" + path + "' line " + std::to_string(line_no) + ": " + problem);
     rows.push_back(row);
   }
   return rows;

@@ -46,7 +46,8 @@ class RawlogReader
   ~RawlogReader();
 
   /** Reads the next item. Returns false at the clean end of the file.
-   * Throws RawlogError (with the entry index) on corrupt or truncated data. */
+   * Throws RawlogError (with the entry index) on corrupt or truncated data, and on a scan
+   * entry whose ray count is above 2^20 (checked before MRPT allocates for it). */
   bool next(RawlogItem& item);
 
   /** Number of top-level rawlog entries read so far. */
@@ -58,7 +59,8 @@ class RawlogReader
  private:
   std::string path_;
   mrpt::io::CFileGZInputStream file_;
-  std::unique_ptr<mrpt::serialization::CArchive> archive_;
+  class LookaheadArchive;
+  std::unique_ptr<LookaheadArchive> archive_;
   std::deque<RawlogItem> pending_;  ///< items of an already-read sensory frame / action set
   size_t entries_ = 0;
 };

@@ -16,7 +16,8 @@ struct StampedPose
   mrpt::poses::CPose2D pose;
 };
 
-/** Reads a TUM file. Throws std::runtime_error naming the file and line on a malformed line. */
+/** Reads a TUM file. Throws std::runtime_error naming the file and line on a malformed line
+ * or a quaternion whose norm is not 1 (within 1%). */
 std::vector<StampedPose> readTum(const std::string& path);
 
 /** Formats poses as TUM text (full precision). */

@@ -46,6 +46,14 @@ struct ScanContribution
   size_t bytes() const { return runs.size() * sizeof(Run) + deltas.size() * sizeof(Delta); }
 };
 
+/** Farthest global cell index a map may reach (either axis, either sign): MRPT keeps a grid's
+ * bounds in float (24-bit mantissa), so cell edges stay exact to a quarter cell up to here. A
+ * pose beyond it (at the default 0.2 m cells: 839 km from the start) is a corrupt input. */
+constexpr int kMaxMapCellIndex = 1 << 22;
+/** Most cells a map may hold (2 bytes each in the MRPT grid; 1 GiB cells = 2 GiB): above it,
+ * a map growth is refused (a pose far from the rest of the map is a corrupt input). */
+constexpr double kMaxMapCells = 1 << 30;
+
 /** Global cell index of coordinate `v` [m]. */
 inline int cellOf(double v, double resolution)
 {

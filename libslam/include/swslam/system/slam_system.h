@@ -5,9 +5,10 @@
 // the caller's thread in a fixed order, so two runs give bit-identical results.
 //
 // feed() validates each scan on the caller's thread: a timestamp that does not increase
-// (backwards or duplicated) or inconsistent geometry skips the scan and says why. A module
-// that fails stops the pipeline; error() says why and results() still holds everything
-// processed until then.
+// (backwards or duplicated) or inconsistent geometry skips the scan and says why; an
+// odometry increment that is not finite is dropped (the scan is tracked without it) and
+// said. A module that fails, in either mode, stops the pipeline; error() says which and
+// why, and results() still holds everything processed until then.
 
 #include <swslam/pose_graph.h>
 #include <swslam/system/blocking_queue.h>
@@ -41,14 +42,16 @@ enum class FeedStatus
 {
   Accepted,
   TimestampNotIncreasing,  ///< backwards or duplicated: skipped
-  BadGeometry,             ///< inconsistent beam count / aperture / validity: skipped
+  BadGeometry,             ///< inconsistent beam count / aperture / validity / sensor pose: skipped
+  OdometryDropped,         ///< taken, without its odometry increment (not finite)
   Stopped,                 ///< the pipeline stopped (finish() was called or a module failed)
 };
 struct FeedResult
 {
   FeedStatus status = FeedStatus::Accepted;
-  std::string message;  ///< what was wrong, for a skipped scan
-  bool ok() const { return status == FeedStatus::Accepted; }
+  std::string message;  ///< what was wrong: why a scan was skipped, or what of it was dropped
+  /** The scan was taken (possibly without its odometry). */
+  bool ok() const { return status == FeedStatus::Accepted || status == FeedStatus::OdometryDropped; }
 };
 
 /** A live summary (status line). */
@@ -117,6 +120,9 @@ class SlamSystem
   void graphLoop();
   void mapLoop();
   void fail(const std::string& module, const std::string& what);
+  /** Deterministic mode: runs one module's step on this thread; a throw fails `module`
+   * (as its thread's loop does in threaded mode). False if it failed. */
+  bool guarded(const char* module, const std::function<void()>& step);
   void closeAll();
 
   const SystemParams params_;

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# swslam-regen-map on a short run of lake-short: the map comes back from graph.graph and
+# keyframes.tum; a malformed graph.graph line is reported (it was skipped silently), and a
+# malformed keyframes.tum line is an error naming the file and line.
+set -uo pipefail
+src=$1 bin=$2/apps
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+log=$src/datasets/lake-short/lake-short.rawlog
+"$bin/swslam" -c "$src/config/default.ini" -i "$log" -o "$tmp/run" -d -q --no-render --max-scans 80 \
+  > "$tmp/run.log" 2>&1 || { echo "FAIL: swslam exited $?"; cat "$tmp/run.log"; exit 1; }
+
+regen() { "$bin/swslam-regen-map" -r "$tmp/run" -i "$log" -c "$src/config/default.ini" -o "$tmp/$1" --no-render; }
+regen clean > "$tmp/clean.log" 2>&1 || { echo "FAIL: clean regen exited $?"; cat "$tmp/clean.log"; fail=1; }
+[[ -s $tmp/clean/map.png ]] || { echo "FAIL: clean regen wrote no map.png"; fail=1; }
+
+# An edge line with a word for a number: skipped, and said.
+line=$(grep -n '^EDGE_SE2' "$tmp/run/graph.graph" | head -1 | cut -d: -f1)
+sed -i "${line}s/^EDGE_SE2 \([0-9]*\) \([0-9]*\) [^ ]*/EDGE_SE2 \1 \2 abc/" "$tmp/run/graph.graph"
+regen edge > "$tmp/edge.log" 2>&1 || { echo "FAIL: regen with a bad edge line exited $?"; cat "$tmp/edge.log"; fail=1; }
+grep -q "graph.graph line $line skipped: malformed EDGE_SE2 line" "$tmp/edge.log" ||
+  { echo "FAIL: the skipped graph.graph line $line was not reported"; cat "$tmp/edge.log"; fail=1; }
+
+# A keyframe line cut short: an error naming the file and the line, exit 1.
+sed -i '3s/ [^ ]*$//' "$tmp/run/keyframes.tum"
+regen kf > "$tmp/kf.log" 2>&1
+code=$?
+[[ $code -eq 1 ]] || { echo "FAIL: bad keyframes.tum: exit $code (expected 1)"; fail=1; }
+grep -q "keyframes.tum' line 3" "$tmp/kf.log" || { echo "FAIL: no message naming keyframes.tum line 3"; cat "$tmp/kf.log"; fail=1; }
+exit $fail
