@@ -119,8 +119,11 @@ if [[ -f $office ]] && command -v rawlog-edit > /dev/null && command -v python3 
   (cd "$work" && rawlog-edit -q -i office.rawlog --export-odometry-txt > /dev/null 2>&1)
   for mode in laser-only odometry; do
     flag=(); [[ $mode == laser-only ]] && flag=(--no-odometry)
-    "$bin/swslam" -c $cfg -i "$office" -o "$work/$mode" -d -q --no-render "${flag[@]}" > /dev/null 2>&1 || true
-    echo "$mode: $(python3 scripts/odometry-steps.py "$work/$mode/trajectory.tum" "$work/office_odometry.txt"), travelled $(field 'Travelling distance' "$work/$mode/summary.md")"
+    if ! "$bin/swslam" -c "$cfg" -i "$office" -o "$work/$mode" -d -q --no-render "${flag[@]}" > /dev/null 2>&1; then
+      echo "$mode: swslam failed (see: $bin/swslam -c $cfg -i $office -o $work/$mode -d ${flag[*]})"
+      continue
+    fi
+    echo "$mode: $(python3 scripts/odometry-steps.py "$work/$mode/trajectory.tum" "$work/office_odometry.txt" 2>&1), travelled $(field 'Travelling distance' "$work/$mode/summary.md")"
   done
 else
   echo "skipped: needs $office, rawlog-edit (apt-get install mrpt-apps) and python3"

@@ -3,6 +3,7 @@
 
 Usage: python3 scripts/odometry-steps.py EST.tum ODOMETRY [--max-error M] [--list]
 
+EST.tum is a TUM file (one pose per scan, as swslam's trajectory.tum).
 ODOMETRY is the log's absolute odometry: either the text file that MRPT's
 `rawlog-edit --export-odometry-txt` writes (columns time, x, y, phi, ...; lines starting
 with % are comments), or a TUM file. The odometry pose at each time of EST.tum is
@@ -48,9 +49,9 @@ def unwrapped(poses):
     return out
 
 
-def interpolate(odometry, t):
-    """Odometry pose at time t (None outside its span); odometry sorted by time, unwrapped."""
-    times = [p[0] for p in odometry]
+def interpolate(odometry, times, t):
+    """Odometry pose at time t (None outside its span); odometry sorted by time, unwrapped,
+    `times` its times."""
     k = bisect.bisect_left(times, t)
     if k < len(times) and times[k] == t:
         return odometry[k][1:]
@@ -71,7 +72,8 @@ def relative(a, b):
 def step_errors(est, odometry):
     """[(scan index, error)] of each step of est with an odometry pose at both ends."""
     odo = unwrapped(sorted(odometry))
-    at = [interpolate(odo, t) for t, *_ in est]
+    times = [p[0] for p in odo]
+    at = [interpolate(odo, times, t) for t, *_ in est]
     out = []
     for k in range(1, len(est)):
         if at[k - 1] is None or at[k] is None:
@@ -94,7 +96,7 @@ def main():
     ap.add_argument("--list", action="store_true")
     args = ap.parse_args()
     try:
-        errors = step_errors(read_odometry(args.est), read_odometry(args.odometry))
+        errors = step_errors(read_poses(args.est), read_odometry(args.odometry))
     except (InputError, OSError) as e:
         print(f"odometry-steps: {e}", file=sys.stderr)
         return 1

@@ -1,7 +1,7 @@
 """Planar poses from text files, shared by the scripts in this folder.
 
 read_poses(path) reads a TUM file (t x y z qx qy qz qw; '#' comments) as [(t, x, y, theta)],
-theta from the quaternion's z and w. With odometry_txt=True it also reads the absolute
+theta from the quaternion's z and w (its norm must be 1 within 1 %). With odometry_txt=True it also reads the absolute
 odometry that MRPT's `rawlog-edit --export-odometry-txt` writes (t x y phi ...; '%'
 comments). A malformed line raises InputError naming the file and line.
 """
@@ -26,7 +26,9 @@ def read_poses(path, odometry_txt=False):
             v = s.split()
             try:
                 if len(v) == 8:
-                    t, x, y, _, _, _, qz, qw = map(float, v)
+                    t, x, y, _, qx, qy, qz, qw = map(float, v)
+                    if abs(math.sqrt(qx * qx + qy * qy + qz * qz + qw * qw) - 1) > 0.01:
+                        raise InputError(f"{path}:{n}: the quaternion is not a unit one")
                     th = 2 * math.atan2(qz, qw)
                 elif odometry_txt and len(v) >= 4:
                     t, x, y, th = map(float, v[:4])

@@ -2,8 +2,8 @@
 # scripts/odometry-steps.py: a trajectory that follows the odometry (interpolated between its
 # readings, the heading turning across +-pi) has no step error; one pose moved by 0.3 m makes its
 # two steps 0.3 m off and they are listed; poses outside the odometry's span are not counted;
-# a malformed odometry line fails with a message naming the file and line. Exits 77 (CTest:
-# skipped) without python3.
+# a malformed odometry line, or a trajectory's quaternion that is not a unit one, fails with
+# a message naming the file and line. Exits 77 (CTest: skipped) without python3.
 # Usage: odometry_steps_test.sh SOURCE_DIR BINARY_DIR
 set -euo pipefail
 src=$1
@@ -58,4 +58,7 @@ echo "$out" | grep -q "^scan 21 0.300$" || fail "moved, scan 21 not listed: $out
 echo "10.0 0 0 x 0" > "$work/bad.txt"
 if "$py" "$script" "$work/follows.tum" "$work/bad.txt" 2> "$work/err"; then fail "malformed line accepted"; fi
 grep -q "bad.txt:1:" "$work/err" || fail "error does not name the line: $(cat "$work/err")"
+printf '# t x y z qx qy qz qw\n10.0 0 0 0 0 0 0 0\n' > "$work/zero.tum"
+if "$py" "$script" "$work/zero.tum" "$work/odo.txt" 2> "$work/err"; then fail "zero quaternion accepted"; fi
+grep -q "zero.tum:2: the quaternion is not a unit one" "$work/err" || fail "zero quaternion: $(cat "$work/err")"
 echo "PASS odometry_steps_test"

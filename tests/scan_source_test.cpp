@@ -1,6 +1,6 @@
 // Reading a run's input: odometry increments between scans, sensor selection, both formats.
 #include <swslam/system/scan_source.h>
-#include <swslam/tracking/motion_prediction.h>
+#include <swslam/se2_scaling.h>
 
 #include <gtest/gtest.h>
 
@@ -73,6 +73,41 @@ TEST(OdometryIntegrator, ExtrapolatesNoFartherThanOneReadingInterval)
   EXPECT_FALSE(untimed.takeIncrement(stamp(0.5)));
   untimed.addReading(CPose2D(0.3, 0, 0));
   EXPECT_NEAR(untimed.takeIncrement(stamp(0.9))->x(), 0.2, 1e-12);
+}
+
+TEST(OdometryIntegrator, AReadingAfterTheScanInterpolates)
+{
+  // The log holds a reading stamped after the scan before the scan itself.
+  auto stamp = [](double t) { return mrpt::Clock::fromDouble(100 + t); };
+  OdometryIntegrator odo;
+  odo.addReading(CPose2D(0, 0, 0), stamp(0.0));
+  odo.addReading(CPose2D(0.1, 0, 0), stamp(0.1));
+  EXPECT_FALSE(odo.takeIncrement(stamp(0.05)));  // at 0.05 m
+  odo.addReading(CPose2D(0.2, 0, 0), stamp(0.2));
+  odo.addReading(CPose2D(0.3, 0, 0), stamp(0.3));
+  const auto inc = odo.takeIncrement(stamp(0.25));  // half-way between the last two
+  ASSERT_TRUE(inc);
+  EXPECT_NEAR(inc->x(), 0.2, 1e-12);
+  // A scan stamped three intervals before the last reading: no farther back than one (s = -1).
+  odo.addReading(CPose2D(0.4, 0, 0), stamp(0.4));
+  odo.addReading(CPose2D(0.5, 0, 0), stamp(0.5));
+  EXPECT_NEAR(odo.takeIncrement(stamp(0.2))->x(), 0.4 - 0.25, 1e-12);
+}
+
+TEST(OdometryIntegrator, ReadingsOutOfOrderOrRepeatedDoNotMoveItBack)
+{
+  auto stamp = [](double t) { return mrpt::Clock::fromDouble(100 + t); };
+  OdometryIntegrator odo;
+  odo.addReading(CPose2D(0, 0, 0), stamp(0.0));
+  odo.addReading(CPose2D(0.1, 0, 0), stamp(0.1));
+  EXPECT_FALSE(odo.takeIncrement(stamp(0.1)));
+  odo.addReading(CPose2D(0.2, 0, 0), stamp(0.2));
+  odo.addReading(CPose2D(0.05, 0, 0), stamp(0.05));  // late: ignored
+  EXPECT_NEAR(odo.takeIncrement(stamp(0.2))->x(), 0.1, 1e-12);
+  odo.addReading(CPose2D(0.21, 0, 0), stamp(0.2));  // same time: replaces the last reading
+  odo.addReading(CPose2D(0.31, 0, 0), stamp(0.3));
+  // The interval stays 0.2 -> 0.3 (0.1 m per 0.1 s): at 0.35 s, 0.36 m.
+  EXPECT_NEAR(odo.takeIncrement(stamp(0.35))->x(), 0.36 - 0.2, 1e-12);
 }
 
 TEST(OdometryIntegrator, ActionsAccumulateUntilTheNextScan)

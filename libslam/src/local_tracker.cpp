@@ -72,12 +72,14 @@ MatchResult LocalTracker::matchLast(const Scan& scan, const CPose2D& guess, Trac
   MatchResult m = matchScans(*last.scan, scan, guess, plicp_);
   if (!correlative_.enabled) return m;
   const SearchTrigger why = searchTrigger(m, guess, correlative_);
-  // A match that lands on a prediction proven by the last scans is kept even with little
-  // overlap: the surroundings are new or changed (a door swung shut), which the submap cannot
-  // explain and the search would explain elsewhere.
+  // Once trust_prediction_after scans in a row confirmed their predictions, a match that
+  // stays on its prediction is kept even with little overlap, until a match fails or moves
+  // its guess: the surroundings are new or changed (a door swung shut), which the submap
+  // cannot explain and the search would explain elsewhere.
   const bool proven = correlative_.trust_prediction_after > 0 &&
                       confirmed_in_a_row_ >= static_cast<size_t>(correlative_.trust_prediction_after);
   if (why == SearchTrigger::None) confirmed_in_a_row_++;
+  // The count goes on through such scans: a door passes by over several of them.
   if (why == SearchTrigger::None || (why == SearchTrigger::LowOverlap && proven)) return m;
   confirmed_in_a_row_ = 0;
   if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
@@ -165,11 +167,12 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   // Initial guess: the previous relative pose moved by the expected motion (the paper uses
   // the previous motion, here at constant velocity over this scan's interval; odometry, when
   // present, is the better prediction).
-  const double scale = tracking_.constant_velocity
-                           ? intervalRatio(interval, last_interval_, tracking_.max_interval_ratio)
-                           : 1.0;
+  CPose2D motion = last_motion_;
+  if (odometry_increment)
+    motion = *odometry_increment;
+  else if (tracking_.constant_velocity)
+    motion = scaledMotion(last_motion_, intervalRatio(interval, last_interval_, tracking_.max_interval_ratio));
   last_interval_ = interval;
-  const CPose2D motion = odometry_increment ? *odometry_increment : scaledMotion(last_motion_, scale);
   const CPose2D predicted = relative_ + motion;
   const auto t0 = std::chrono::steady_clock::now();
   step.source = TrackingSource::Match;

@@ -1,10 +1,9 @@
 #include "swslam/system/scan_source.h"
 
+#include "swslam/se2_scaling.h"
+
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
-
-#include "swslam/tracking/motion_prediction.h"
-
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
@@ -18,6 +17,16 @@ using mrpt::poses::CPose2D;
 
 void OdometryIntegrator::addReading(const CPose2D& odometry, mrpt::Clock::time_point t)
 {
+  const mrpt::Clock::time_point unknown{};
+  if (last_reading_ && t != unknown && last_reading_->time != unknown)
+  {
+    if (t < last_reading_->time) return;  // out of order: the newer reading stands
+    if (t == last_reading_->time)
+    {
+      last_reading_->pose = odometry;  // a correction at the same time: no new interval
+      return;
+    }
+  }
   previous_reading_ = last_reading_;
   last_reading_ = Reading{odometry, t};
 }

@@ -56,7 +56,8 @@ std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSo
 class OdometryIntegrator
 {
  public:
-  /** An absolute odometry reading (CObservationOdometry) taken at `t` (default: unknown). */
+  /** An absolute odometry reading (CObservationOdometry) taken at `t` (default: unknown). A
+   * reading older than the last one is ignored; one at the same time replaces it. */
   void addReading(const mrpt::poses::CPose2D& odometry, mrpt::Clock::time_point t = {});
   /** A relative motion (rawlog action). */
   void addIncrement(const mrpt::poses::CPose2D& increment);

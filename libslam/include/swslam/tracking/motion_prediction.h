@@ -1,17 +1,13 @@
 #pragma once
 // Tracking's initial guess (doc/tracking.md): the previous motion, held at constant velocity
-// over the new scan interval. Logs whose scans come at irregular intervals (a simulator's or
-// a loaded computer's) would otherwise predict a 0.1 s step from a 0.05 s one.
+// over the new scan interval (scaledMotion() by intervalRatio()). Logs whose scans come at
+// irregular intervals (a simulator's or a loaded computer's) would otherwise predict a 0.1 s
+// step from a 0.05 s one.
 
-#include <mrpt/poses/CPose2D.h>
+#include <swslam/se2_scaling.h>
 
 namespace swslam
 {
-/** exp(s log(m)) in SE(2): the motion at the same constant twist (forward, lateral and
- * angular velocity) held s times as long. s = 1 gives m, s = 2 gives m (+) m, s = 0 the
- * identity, s = -1 the inverse motion; any real s. */
-mrpt::poses::CPose2D scaledMotion(const mrpt::poses::CPose2D& m, double s);
-
 /** dt_now / dt_prev, the scale of the previous motion for the next scan, clamped to
  * [1 / max_ratio, max_ratio] (a gap in the log says little about the motion during it); 1 if
  * either interval is not positive (a missing or repeated timestamp says nothing). */
