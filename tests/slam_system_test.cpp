@@ -117,6 +117,41 @@ TEST(SlamSystem, ThreadedRunTracksTheLogAndFillsEveryStat)
   EXPECT_GT(slam.mapSnapshot().getSizeX(), 0u);
 }
 
+TEST(SlamSystem, AStampThatJumpedForwardDoesNotEndTheRun)
+{
+  test::World world = test::roomWorld();
+  for (int resume : {5, 0})
+  {
+    SystemParams p = defaultParams();
+    p.system.timestamp_resume_scans = resume;
+    SlamSystem slam(p, RunMode::Deterministic);
+    std::mt19937 rng(3);
+    double x = 0;
+    auto feedAt = [&](double t) { return slam.feed({scanAt(world, CPose2D(x += 0.05, 0, 0), t, rng), {}}); };
+    ASSERT_TRUE(feedAt(10.0).ok());
+    ASSERT_TRUE(feedAt(10.1).ok());
+    ASSERT_TRUE(feedAt(1000.0).ok());  // a corrupt stamp, taken (nothing says it yet)
+    // Behind it but out of order among themselves: no resumption.
+    EXPECT_EQ(feedAt(10.3).status, FeedStatus::TimestampNotIncreasing);
+    EXPECT_EQ(feedAt(10.25).status, FeedStatus::TimestampNotIncreasing);
+    for (int k = 0; k < 3; k++) EXPECT_EQ(feedAt(10.4 + 0.1 * k).status, FeedStatus::TimestampNotIncreasing) << k;
+    const FeedResult fifth = feedAt(10.7);  // the 5th in order (10.25 started the run)
+    if (resume == 0)
+    {
+      EXPECT_EQ(fifth.status, FeedStatus::TimestampNotIncreasing);
+      EXPECT_EQ(feedAt(10.8).status, FeedStatus::TimestampNotIncreasing);
+      continue;
+    }
+    EXPECT_EQ(fifth.status, FeedStatus::TimestampsResumed);
+    EXPECT_TRUE(fifth.ok());
+    EXPECT_NE(fifth.message.find("jumped forward"), std::string::npos) << fifth.message;
+    EXPECT_EQ(feedAt(10.8).status, FeedStatus::Accepted);
+    slam.finish();
+    EXPECT_EQ(slam.results().trajectory.size(), 5u);  // 10.0, 10.1, 1000, 10.7, 10.8
+    EXPECT_EQ(slam.error(), "");
+  }
+}
+
 TEST(SlamSystem, BackwardDuplicateAndMalformedScansAreSkippedWithAReason)
 {
   SlamSystem slam(defaultParams(), RunMode::Deterministic);

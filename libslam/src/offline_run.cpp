@@ -28,7 +28,8 @@ class SkipReporter
   void report(FeedStatus kind, size_t input_index, const std::string& why)
   {
     const size_t n = ++counts_[kind];
-    const char* what = kind == FeedStatus::OdometryDropped ? "input scan " : "skipped input scan ";
+    const bool taken = kind == FeedStatus::OdometryDropped || kind == FeedStatus::TimestampsResumed;
+    const char* what = taken ? "input scan " : "skipped input scan ";
     if (n <= static_cast<size_t>(max_)) err_ << "swslam: " << what << input_index << ": " << why << "\n";
     if (n == static_cast<size_t>(max_) + 1) err_ << "swslam: (further messages of this kind are only counted)\n";
   }

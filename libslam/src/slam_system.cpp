@@ -53,13 +53,28 @@ FeedResult SlamSystem::feed(ScanInput input)
   };
   if (!input.observation) return skip(FeedStatus::BadGeometry, "no observation");
   const double t = mrpt::Clock::toDouble(input.observation->timestamp);
+  FeedResult result;
   if (!std::isfinite(t) || t <= last_timestamp_)
   {
-    char buf[160];
-    std::snprintf(buf, sizeof(buf), "timestamp %.6f s is %s the previous scan's (%.6f s)", t,
-                  t == last_timestamp_ ? "equal to" : "before", last_timestamp_);
-    return skip(FeedStatus::TimestampNotIncreasing, buf);
+    // Scans behind the last one taken, but in order among themselves: once there are
+    // timestamp_resume_scans of them, that one had jumped forward and the log goes on here.
+    const bool behind = std::isfinite(t) && t < last_timestamp_;
+    behind_in_order_ = behind ? (behind_in_order_ > 0 && t > last_behind_ ? behind_in_order_ + 1 : 1) : 0;
+    last_behind_ = t;
+    const size_t resume = static_cast<size_t>(params_.system.timestamp_resume_scans);
+    char buf[200];
+    if (resume == 0 || behind_in_order_ < resume)
+    {
+      std::snprintf(buf, sizeof(buf), "timestamp %.6f s is %s the previous scan's (%.6f s)", t,
+                    t == last_timestamp_ ? "equal to" : "before", last_timestamp_);
+      return skip(FeedStatus::TimestampNotIncreasing, buf);
+    }
+    std::snprintf(buf, sizeof(buf),
+                  "%zu scans in order behind %.6f s: that stamp jumped forward; the log resumes at %.6f s",
+                  behind_in_order_, last_timestamp_, t);
+    result = {FeedStatus::TimestampsResumed, buf};
   }
+  behind_in_order_ = 0;
   try
   {
     checkObservationGeometry(*input.observation);
@@ -69,7 +84,6 @@ FeedResult SlamSystem::feed(ScanInput input)
     return skip(FeedStatus::BadGeometry, e.what());
   }
   last_timestamp_ = t;
-  FeedResult result;
   if (input.odometry_increment && !isFinite(*input.odometry_increment))
   {
     result = {FeedStatus::OdometryDropped,

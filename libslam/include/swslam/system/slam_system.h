@@ -44,6 +44,7 @@ enum class FeedStatus
   TimestampNotIncreasing,  ///< backwards or duplicated: skipped
   BadGeometry,             ///< inconsistent beam count / aperture / validity / sensor pose: skipped
   OdometryDropped,         ///< taken, without its odometry increment (not finite)
+  TimestampsResumed,       ///< taken: the scans behind a stamp that jumped forward resume the log
   Stopped,                 ///< the pipeline stopped (finish() was called or a module failed)
 };
 struct FeedResult
@@ -51,7 +52,11 @@ struct FeedResult
   FeedStatus status = FeedStatus::Accepted;
   std::string message;  ///< what was wrong: why a scan was skipped, or what of it was dropped
   /** The scan was taken (possibly without its odometry). */
-  bool ok() const { return status == FeedStatus::Accepted || status == FeedStatus::OdometryDropped; }
+  bool ok() const
+  {
+    return status == FeedStatus::Accepted || status == FeedStatus::OdometryDropped ||
+           status == FeedStatus::TimestampsResumed;
+  }
 };
 
 /** A live summary (status line). */
@@ -149,6 +154,8 @@ class SlamSystem
   // feed()'s state: the caller's thread only.
   size_t fed_ = 0;
   double last_timestamp_ = -1;
+  size_t behind_in_order_ = 0;  ///< skipped scans in a row behind last_timestamp_, in order
+  double last_behind_ = 0;      ///< the last of them's timestamp
   bool finished_ = false;
 };
 
