@@ -100,7 +100,8 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
         recorder.reset();
       }
       const FeedResult r = slam.feed({scan, std::nullopt});
-      if (!r.ok() && r.status != FeedStatus::Stopped) err << "\nswslam-live: skipped a scan: " << r.message << "\n";
+      if (r.status != FeedStatus::Stopped && !r.message.empty())
+        err << "\nswslam-live: " << (r.ok() ? "" : "skipped a scan: ") << r.message << "\n";
     }
     if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period))
     {
