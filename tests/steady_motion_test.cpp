@@ -58,3 +58,22 @@ TEST(SteadyMotion, NoCostWhileSlowOrTurningOnTheSpot)
   p.steady_prior_cost = 0;
   EXPECT_EQ(cruising.costPerM2(p), 0);
 }
+
+TEST(SteadyMotion, SigmaIsThatOfThePredictionsMade)
+{
+  // Steps of 1.0 and 2.0 m in turn (scans at irregular intervals), each predicted exactly at
+  // constant velocity: no spread, the floor sigma; judged against the previous step instead,
+  // they change by 1 m every time.
+  CorrelativeParams p;
+  p.steady_prior_cost = 0.01;
+  p.steady_sigma_min = 0.1;
+  SteadyMotion exact, per_step;
+  for (int k = 0; k < 8; k++)
+  {
+    const CPose2D motion(k % 2 ? 2.0 : 1.0, 0, 0);
+    exact.add(motion, motion);
+    per_step.add(motion);
+  }
+  EXPECT_NEAR(exact.costPerM2(p), 0.01 / (0.1 * 0.1), 1e-12);
+  EXPECT_NEAR(per_step.costPerM2(p), 0.01 / 1.0, 1e-12);
+}

@@ -184,7 +184,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   last_motion_ = rel - relative_;
-  steady_.add(last_motion_);
+  steady_.add(last_motion_, motion);  // the error of the prediction this scan used
   relative_ = rel;
   step.keyframe = last.id;
   step.relative = rel;

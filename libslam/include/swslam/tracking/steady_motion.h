@@ -10,31 +10,35 @@
 
 #include <cstddef>
 #include <deque>
+#include <optional>
 
 namespace swslam
 {
 class SteadyMotion
 {
  public:
-  /** Motions remembered: the spread is over the last kHistory - 1 changes between them. */
+  /** Motions remembered; the spread is over the last kHistory - 1 prediction errors. */
   static constexpr size_t kHistory = 6;
   /** Motions whose mean length is the vehicle's current step. */
   static constexpr size_t kStepWindow = 3;
   /** Changes needed before the prior applies. */
   static constexpr size_t kMinChanges = 3;
 
-  /** Appends the vehicle motion between the last two scans (oldest forgotten). */
-  void add(const mrpt::poses::CPose2D& motion);
+  /** Appends the vehicle motion between the last two scans (oldest forgotten), and the error
+   * of its prediction: motion - predicted in translation, `predicted` being the previous
+   * motion when not given (the paper's constant motion; none for the first motion). */
+  void add(const mrpt::poses::CPose2D& motion,
+           const std::optional<mrpt::poses::CPose2D>& predicted = std::nullopt);
 
   /** The search's quadratic translation cost, score lost per m^2 from the prediction:
-   * steady_prior_cost / sigma^2, sigma^2 = max(mean |t_k - t_{k-1}|^2 over the remembered
-   * changes of the motions' translations, steady_sigma_min^2), when at least kMinChanges
-   * changes are known and the last kStepWindow motions are steady_min_step long on average;
+   * steady_prior_cost / sigma^2, sigma^2 = max(mean squared remembered prediction error,
+   * steady_sigma_min^2), when at least kMinChanges errors are known and the last kStepWindow motions are steady_min_step long on average;
    * 0 otherwise (starting, stopping, turning on the spot, or steady_prior_cost 0). */
   double costPerM2(const CorrelativeParams& p) const;
 
  private:
   std::deque<mrpt::poses::CPose2D> motions_;
+  std::deque<double> squared_errors_;  ///< of the predictions, translation [m^2]
 };
 
 }  // namespace swslam
