@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <random>
 
 #include "test_support.h"
@@ -21,6 +22,24 @@ using namespace swslam;
 
 namespace
 {
+/** Reads `path` to its end: the items read, and the error that stopped the reading (none
+ * at a clean end). */
+std::pair<size_t, std::optional<RawlogError>> readAll(const std::string& path)
+{
+  RawlogReader r(path);
+  RawlogItem item;
+  size_t read = 0;
+  try
+  {
+    while (r.next(item)) read++;
+  }
+  catch (const RawlogError& e)
+  {
+    return {read, e};
+  }
+  return {read, std::nullopt};
+}
+
 mrpt::obs::CObservation2DRangeScan::Ptr makeScan(int k)
 {
   std::mt19937 rng(k);
@@ -133,16 +152,10 @@ TEST(RawlogReader, TruncatedFileGivesTheEntryIndexAndKeepsWhatWasRead)
   const auto size = std::filesystem::file_size(path);
   std::filesystem::copy_file(path, cut);
   std::filesystem::resize_file(cut, size / 2 + 7);  // cut in the middle of an entry
-  RawlogReader r(cut);
-  RawlogItem item;
-  size_t read = 0;
-  try
+  const auto [read, error] = readAll(cut);
+  ASSERT_TRUE(error) << "a truncated rawlog must not look like a clean end";
   {
-    while (r.next(item)) read++;
-    FAIL() << "a truncated rawlog must not look like a clean end";
-  }
-  catch (const RawlogError& e)
-  {
+    const RawlogError& e = *error;
     EXPECT_EQ(e.entry(), read);
     EXPECT_GE(read, 8u);
     EXPECT_NE(std::string(e.what()).find("entry #" + std::to_string(read)), std::string::npos)
@@ -205,16 +218,10 @@ TEST(RawlogReader, AScanWithAHugeRayCountIsAnErrorBeforeAnyAllocation)
   for (int b = 0; b < 4; b++) bytes[count_at + b] = static_cast<char>(huge >> (8 * b));
   std::ofstream(path, std::ios::binary) << bytes;
 
-  RawlogReader r(path);
-  RawlogItem item;
-  size_t read = 0;
-  try
+  const auto [read, error] = readAll(path);
+  ASSERT_TRUE(error) << "a corrupt ray count must be an error";
   {
-    while (r.next(item)) read++;
-    FAIL() << "a corrupt ray count must be an error";
-  }
-  catch (const RawlogError& e)
-  {
+    const RawlogError& e = *error;
     EXPECT_EQ(e.entry(), 4u);  // scan, odometry, scan, odometry, then the third scan
     EXPECT_EQ(read, 4u);
     EXPECT_NE(std::string(e.what()).find("a scan of 200000000 rays"), std::string::npos) << e.what();
