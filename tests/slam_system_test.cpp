@@ -117,6 +117,40 @@ TEST(SlamSystem, ThreadedRunTracksTheLogAndFillsEveryStat)
   EXPECT_GT(slam.mapSnapshot().getSizeX(), 0u);
 }
 
+TEST(SlamSystem, ThreadedRunWithoutGraphLagEqualsTheDeterministicRun)
+{
+  // max_graph_lag = 0: tracking takes each scan after the graph has optimized every keyframe
+  // sent, as deterministic mode does, so the three threads give the very same result.
+  SystemParams p = defaultParams();
+  ASSERT_EQ(p.system.max_graph_lag, 0);  // the default
+  // A slower graph thread (the whole graph in the window at every node), so that tracking would
+  // run ahead of it: with max_graph_lag = -1 the trajectories then differ.
+  p.graph_optimizer.window_size = 100000;
+  RunResults det, thr;
+  mrpt::maps::COccupancyGridMap2D map_det, map_thr;
+  for (const RunMode mode : {RunMode::Deterministic, RunMode::Threaded})
+  {
+    SlamSystem slam(p, mode);
+    feedLake(slam, 2461);
+    slam.finish();
+    EXPECT_EQ(slam.error(), "");
+    (mode == RunMode::Threaded ? thr : det) = slam.results();
+    (mode == RunMode::Threaded ? map_thr : map_det) = slam.mapSnapshot();
+  }
+  ASSERT_EQ(thr.trajectory.size(), 2461u);
+  ASSERT_EQ(det.trajectory.size(), thr.trajectory.size());
+  for (size_t i = 0; i < det.trajectory.size(); i++)
+  {
+    ASSERT_EQ(det.trajectory[i].pose.x(), thr.trajectory[i].pose.x()) << i;
+    ASSERT_EQ(det.trajectory[i].pose.y(), thr.trajectory[i].pose.y()) << i;
+    ASSERT_EQ(det.trajectory[i].pose.phi(), thr.trajectory[i].pose.phi()) << i;
+  }
+  EXPECT_EQ(det.graph.edgeCount(), thr.graph.edgeCount());
+  EXPECT_EQ(det.loops, thr.loops);
+  ASSERT_EQ(map_det.getSizeX(), map_thr.getSizeX());
+  EXPECT_EQ(map_det.getRawMap(), map_thr.getRawMap());
+}
+
 TEST(SlamSystem, AStampThatJumpedForwardDoesNotEndTheRun)
 {
   test::World world = test::roomWorld();

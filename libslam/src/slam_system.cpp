@@ -116,6 +116,10 @@ bool SlamSystem::guarded(const char* module, const std::function<void()>& step)
 
 void SlamSystem::trackOne(const ScanInput& input, size_t index)
 {
+  // Threaded: go on from the graph's optimized keyframes, as deterministic mode does, unless
+  // more lag is allowed (the graph thread still optimizes while tracking waits for scans).
+  if (mode_ == RunMode::Threaded && params_.system.max_graph_lag >= 0)
+    graph_backlog_.waitAtMost(static_cast<size_t>(params_.system.max_graph_lag));
   {
     std::lock_guard<std::mutex> lock(updates_mutex_);
     for (const auto& [id, pose] : pending_updates_)
@@ -160,7 +164,10 @@ void SlamSystem::trackOne(const ScanInput& input, size_t index)
   if (mode_ == RunMode::Deterministic)
     guarded("graph optimization", [&] { graphOne(node); });
   else
+  {
+    graph_backlog_.added();
     node_queue_.push(std::move(node));
+  }
 }
 
 void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
@@ -226,6 +233,7 @@ void SlamSystem::closeAll()
   scan_queue_.close();
   node_queue_.close();
   map_queue_.close();
+  graph_backlog_.close();
 }
 
 void SlamSystem::trackingLoop()
@@ -247,7 +255,11 @@ void SlamSystem::graphLoop()
   nameThisThread("swslam-graph");
   try
   {
-    while (auto node = node_queue_.pop()) graphOne(*node);
+    while (auto node = node_queue_.pop())
+    {
+      graphOne(*node);
+      graph_backlog_.done();
+    }
   }
   catch (const std::exception& e)
   {

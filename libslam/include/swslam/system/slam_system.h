@@ -11,6 +11,7 @@
 // why, and results() still holds everything processed until then.
 
 #include <swslam/pose_graph.h>
+#include <swslam/system/backlog.h>
 #include <swslam/system/blocking_queue.h>
 #include <swslam/system/graph_module.h>
 #include <swslam/system/map_module.h>
@@ -139,6 +140,7 @@ class SlamSystem
   BlockingQueue<std::pair<size_t, ScanInput>> scan_queue_;
   BlockingQueue<NewNode> node_queue_;
   BlockingQueue<MapMessage> map_queue_;
+  Backlog graph_backlog_;  ///< keyframes sent to the graph thread and not finished
   std::thread tracking_thread_, graph_thread_, map_thread_;
 
   mutable std::mutex updates_mutex_;
