@@ -64,6 +64,24 @@ RunResults runCircuit(const SystemParams& p, std::vector<StampedPose>& truth)
   slam.finish();
   return slam.results();
 }
+
+/** The two runs' trajectories, graphs and maps are bit-identical. */
+void expectSameRun(const RunResults& a, const mrpt::maps::COccupancyGridMap2D& map_a,
+                   const RunResults& b, const mrpt::maps::COccupancyGridMap2D& map_b)
+{
+  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+  for (size_t i = 0; i < a.trajectory.size(); i++)
+  {
+    ASSERT_EQ(a.trajectory[i].pose.x(), b.trajectory[i].pose.x()) << i;
+    ASSERT_EQ(a.trajectory[i].pose.y(), b.trajectory[i].pose.y()) << i;
+    ASSERT_EQ(a.trajectory[i].pose.phi(), b.trajectory[i].pose.phi()) << i;
+  }
+  EXPECT_EQ(a.graph.edgeCount(), b.graph.edgeCount());
+  EXPECT_EQ(a.loops, b.loops);
+  ASSERT_EQ(map_a.getSizeX(), map_b.getSizeX());
+  ASSERT_EQ(map_a.getSizeY(), map_b.getSizeY());
+  EXPECT_EQ(map_a.getRawMap(), map_b.getRawMap());
+}
 }  // namespace
 
 TEST(SlamSystem, DeterministicRunsAreBitIdentical)
@@ -79,17 +97,7 @@ TEST(SlamSystem, DeterministicRunsAreBitIdentical)
     (out == &a ? map_a : map_b) = slam.mapSnapshot();
   }
   ASSERT_EQ(a.trajectory.size(), 800u);
-  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
-  for (size_t i = 0; i < a.trajectory.size(); i++)
-  {
-    ASSERT_EQ(a.trajectory[i].pose.x(), b.trajectory[i].pose.x()) << i;
-    ASSERT_EQ(a.trajectory[i].pose.y(), b.trajectory[i].pose.y()) << i;
-    ASSERT_EQ(a.trajectory[i].pose.phi(), b.trajectory[i].pose.phi()) << i;
-  }
-  EXPECT_EQ(a.graph.edgeCount(), b.graph.edgeCount());
-  ASSERT_EQ(map_a.getSizeX(), map_b.getSizeX());
-  ASSERT_EQ(map_a.getSizeY(), map_b.getSizeY());
-  EXPECT_EQ(map_a.getRawMap(), map_b.getRawMap());
+  expectSameRun(a, map_a, b, map_b);
   EXPECT_LT(ate(a), 0.1);
 }
 
@@ -138,17 +146,7 @@ TEST(SlamSystem, ThreadedRunWithoutGraphLagEqualsTheDeterministicRun)
     (mode == RunMode::Threaded ? map_thr : map_det) = slam.mapSnapshot();
   }
   ASSERT_EQ(thr.trajectory.size(), 2461u);
-  ASSERT_EQ(det.trajectory.size(), thr.trajectory.size());
-  for (size_t i = 0; i < det.trajectory.size(); i++)
-  {
-    ASSERT_EQ(det.trajectory[i].pose.x(), thr.trajectory[i].pose.x()) << i;
-    ASSERT_EQ(det.trajectory[i].pose.y(), thr.trajectory[i].pose.y()) << i;
-    ASSERT_EQ(det.trajectory[i].pose.phi(), thr.trajectory[i].pose.phi()) << i;
-  }
-  EXPECT_EQ(det.graph.edgeCount(), thr.graph.edgeCount());
-  EXPECT_EQ(det.loops, thr.loops);
-  ASSERT_EQ(map_det.getSizeX(), map_thr.getSizeX());
-  EXPECT_EQ(map_det.getRawMap(), map_thr.getRawMap());
+  expectSameRun(det, map_det, thr, map_thr);
 }
 
 TEST(SlamSystem, AStampThatJumpedForwardDoesNotEndTheRun)
