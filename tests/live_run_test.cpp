@@ -152,6 +152,8 @@ TEST(LiveRun, SurvivesADroppedConnectionAndAnUnpluggedSensor)
   EXPECT_NE(err.str().find("waiting for the sensor"), std::string::npos) << err.str();
   EXPECT_NE(err.str().find("receiving scans again"), std::string::npos) << err.str();
   EXPECT_NE(out.str().find("connection(s)"), std::string::npos);
+  // No status line (status = false, the app's --quiet), although the run lasts past its 10 s period.
+  EXPECT_EQ(err.str().find("scans/s"), std::string::npos) << err.str();
   std::filesystem::remove_all(dir);
 }
 

@@ -5,6 +5,7 @@
 #include "swslam/system/progress_bar.h"
 #include "swslam/system/rawlog_recorder.h"
 #include "swslam/system/run_outputs.h"
+#include "swslam/system/skip_reporter.h"
 #include "swslam/system/slam_system.h"
 #include "swslam/system/stop_signal.h"
 
@@ -82,6 +83,8 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   const auto t0 = steady_clock::now();
   auto last_save = t0, last_status = t0;
   const bool tty = opts.status && isTerminal(stderr);
+  // On a terminal a message starts on a new line, below the status line it interrupts.
+  SkipReporter skips(err, params.system.max_printed_warnings, tty ? "\nswslam-live: " : "swslam-live: ");
   int code = 0;
   while (!stop.requested() && slam.error().empty())
   {
@@ -101,7 +104,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
       }
       const FeedResult r = slam.feed({scan, std::nullopt});
       if (r.status != FeedStatus::Stopped && !r.message.empty())
-        err << "\nswslam-live: " << (r.ok() ? "" : "skipped a scan: ") << r.message << "\n";
+        skips.report(r.status, link->stats().scans - 1, r.message);
     }
     if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period))
     {
@@ -109,7 +112,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
       code = std::max(code, save(slam, params, opts, elapsed, err, false));
       last_save = now;
     }
-    if (now - last_status >= (tty ? milliseconds(250) : milliseconds(10000)))
+    if (opts.status && now - last_status >= (tty ? milliseconds(250) : milliseconds(10000)))
     {
       const SystemStatus s = slam.status();
       const std::string line = statusLine(s, link->stats(), s.scans / std::max(elapsed, 1e-3));

@@ -4,6 +4,7 @@
 #include "swslam/system/progress_bar.h"
 #include "swslam/system/run_outputs.h"
 #include "swslam/system/scan_source.h"
+#include "swslam/system/skip_reporter.h"
 #include "swslam/system/slam_system.h"
 #include "swslam/system/stop_signal.h"
 #include "swslam/eval/report.h"
@@ -11,36 +12,12 @@
 #include <chrono>
 #include <malloc.h>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <ostream>
 #include <thread>
 
 namespace swslam
 {
-namespace
-{
-/** Prints the first few skip (or dropped-odometry) messages of each kind; counts all. */
-class SkipReporter
-{
- public:
-  SkipReporter(std::ostream& err, int max_printed) : err_(err), max_(max_printed) {}
-  void report(FeedStatus kind, size_t input_index, const std::string& why)
-  {
-    const size_t n = ++counts_[kind];
-    const bool taken = kind == FeedStatus::OdometryDropped || kind == FeedStatus::TimestampsResumed;
-    const char* what = taken ? "input scan " : "skipped input scan ";
-    if (n <= static_cast<size_t>(max_)) err_ << "swslam: " << what << input_index << ": " << why << "\n";
-    if (n == static_cast<size_t>(max_) + 1) err_ << "swslam: (further messages of this kind are only counted)\n";
-  }
-
- private:
-  std::ostream& err_;
-  int max_;
-  std::map<FeedStatus, size_t> counts_;
-};
-}  // namespace
-
 int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err)
 {
   StopSignal stop;
@@ -63,7 +40,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   const auto t0 = std::chrono::steady_clock::now();
   auto slam = std::make_unique<SlamSystem>(params, opts.deterministic ? RunMode::Deterministic : RunMode::Threaded);
   ProgressBar bar(stderr, opts.progress && isTerminal(stderr));
-  SkipReporter skips(err, params.system.max_printed_warnings);
+  SkipReporter skips(err, params.system.max_printed_warnings, "swslam: ");
   int code = kExitOk;
   size_t read = 0;
   try
@@ -134,7 +111,8 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   const auto problems = writeRunOutputs(opts.output, results, grid, params.map, text, opts.render);
   for (const OutputProblem& p : problems) err << "swslam: could not write " << p.file << ": " << p.message << "\n";
   if (!problems.empty() && code == kExitOk) code = kExitOutputError;
-  out << text << "# outputs in " << opts.output << "/ (map.png, render.png, trajectory.tum, stats.csv, summary.md)\n";
+  out << text << "# outputs in " << opts.output << "/ (map.png, " << (opts.render ? "render.png, " : "")
+      << "trajectory.tum, stats.csv, summary.md)\n";
   return code;
 }
 

@@ -20,7 +20,7 @@ struct LiveRunOptions
   double save_period = 30;             ///< [s] outputs rewritten this often (0: only at the end)
   double duration = 0;                 ///< [s] stop after this long (0: until SIGINT/SIGTERM)
   double stall_timeout = 2;            ///< [s] no scan this long: the sensor stopped answering
-  bool status = true;                  ///< status line on a terminal (else a line every 10 s)
+  bool status = true;                  ///< status line in place on a terminal, else a line every 10 s; false: none
   bool render = true;
 };
 
