@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 
 int main(int argc, char** argv)
 {
@@ -30,7 +31,15 @@ int main(int argc, char** argv)
     if (config.isSet())
       params = swslam::loadStrict<swslam::GraphOptimizerParams>(
           mrpt::config::CConfigFile(config.getValue()), "graph_optimizer");
-    if (alpha.isSet()) params.kernel_alpha = std::strtod(alpha.getValue().c_str(), nullptr);
+    if (alpha.isSet())
+    {
+      // A string, so that "-inf" (strtod's spelling) is accepted; nothing else may follow.
+      const char* text = alpha.getValue().c_str();
+      char* end = nullptr;
+      params.kernel_alpha = std::strtod(text, &end);
+      if (end == text || *end != '\0')
+        throw std::invalid_argument("--alpha '" + alpha.getValue() + "' is not a number");
+    }
     if (c.isSet()) params.kernel_c = c.getValue();
     if (iters.isSet()) params.max_iterations = iters.getValue();
     params.check();

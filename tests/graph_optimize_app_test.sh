@@ -36,6 +36,8 @@ grep -q "missing node 99" "$DIR/err.txt" || fail "missing node message: $(cat "$
 [ ! -e "$DIR/bad.g2o" ] || fail "output written on error"
 if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha 3 2> "$DIR/err.txt" > /dev/null; then fail "alpha 3 accepted"; fi
 grep -q "alpha must be in" "$DIR/err.txt" || fail "alpha message"
+if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha abc 2> "$DIR/err.txt" > /dev/null; then fail "alpha abc accepted"; fi
+grep -q "alpha 'abc' is not a number" "$DIR/err.txt" || fail "alpha abc message: $(cat "$DIR/err.txt")"
 if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha=2 2> "$DIR/err.txt" > /dev/null; then fail "bad syntax accepted"; fi
 [ ! -e "$DIR/bad.g2o" ] || fail "output written on a command-line error"
 if "$BIN" -i "$DIR/nope.graph" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "missing file accepted"; fi
