@@ -43,7 +43,7 @@ enum class FeedStatus
 {
   Accepted,
   TimestampNotIncreasing,  ///< backwards or duplicated: skipped
-  BadGeometry,             ///< inconsistent beam count / aperture / validity / sensor pose: skipped
+  BadGeometry,             ///< too few beams, aperture, max range or sensor pose unusable: skipped
   OdometryDropped,         ///< taken, without its odometry increment (not finite)
   TimestampsResumed,       ///< taken: the scans behind a stamp that jumped forward resume the log
   Stopped,                 ///< the pipeline stopped (finish() was called or a module failed)
