@@ -97,6 +97,27 @@ TEST(Config, OutOfRangeValueIsAnError)
   EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
 }
 
+TEST(Config, AMapTooLargeToAllocateIsAnErrorNotACrash)
+{
+  // An infinite or huge first map would be cast to a cell count past an int's range.
+  for (const char* text : {"[map]\ninitial_half_size = inf\n", "[map]\ninitial_half_size = 1e9\n",
+                           "[map]\ngrow_margin = 1e9\n", "[map]\nresolution = 0.005\ninitial_half_size = 41\n"})
+  {
+    mrpt::config::CConfigFileMemory cfg(text);
+    try
+    {
+      loadSystemParams(cfg);
+      ADD_FAILURE() << "accepted: " << text;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("at most 8192 cells"), std::string::npos) << e.what();
+    }
+  }
+  mrpt::config::CConfigFileMemory ok("[map]\nresolution = 0.005\ninitial_half_size = 40\n");
+  EXPECT_NO_THROW(loadSystemParams(ok));
+}
+
 TEST(Config, BrokenCrossSectionRuleIsAnErrorNamingBothKeys)
 {
   mrpt::config::CConfigFileMemory cfg(

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <utility>
@@ -129,6 +131,11 @@ TEST(SummedGrid, OutsideTheGridTheSumIsZeroAndABadSignIsAnError)
   const ScanContribution c = randomContribution(rng, -5, -5, 10, 10);
   EXPECT_THROW(grid.add(c, 2), std::invalid_argument);
   EXPECT_THROW(SummedGrid(0, 4, 4), std::invalid_argument);
+  // Checked before any length becomes a cell count (an int).
+  EXPECT_THROW(SummedGrid(0.2, std::numeric_limits<double>::infinity(), 4), std::invalid_argument);
+  EXPECT_THROW(SummedGrid(0.2, 4, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(SummedGrid(1e-9, 4, 4), std::invalid_argument);
+  EXPECT_THROW(SummedGrid(0.2, 4, -1), std::invalid_argument);
 }
 
 TEST(SummedGrid, AGrowthBeyondTheCellLimitIsRefusedAndLeavesTheMapAsItWas)

@@ -1,4 +1,5 @@
 #include "swslam/map/map_params.h"
+#include "swslam/map/summed_grid.h"
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/bits_math.h>
@@ -29,6 +30,9 @@ void MapParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const
   };
   require(resolution >= 0.005 && resolution <= 10, "resolution must be in [0.005, 10] m");
   require(initial_half_size > 0 && grow_margin >= 0, "initial_half_size must be > 0, grow_margin >= 0");
+  require(initial_half_size / resolution <= SummedGrid::kMaxCellsPerLength &&
+              grow_margin / resolution <= SummedGrid::kMaxCellsPerLength,
+          "initial_half_size and grow_margin must be at most 8192 cells (resolution times 8192)");
   require(prob_occupied > 0.5 && prob_occupied < 1, "prob_occupied must be in (0.5, 1)");
   require(prob_free > 0 && prob_free < 0.5, "prob_free must be in (0, 0.5)");
   require(max_insertion_range > 0, "max_insertion_range must be > 0");

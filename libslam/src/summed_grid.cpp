@@ -28,15 +28,26 @@ CellBox tilesCovering(const CellBox& b)
 }
 
 constexpr size_t kTileCells = static_cast<size_t>(SummedGrid::kTileSize) * SummedGrid::kTileSize;
+
+/** ceil(length / resolution) as a cell count, checked before the cast (a NaN, an infinity or
+ * a count past an int's range would make the cast undefined). */
+int cellCount(double length, double resolution, const char* what)
+{
+  const double n = std::ceil(length / resolution);
+  if (!(n >= 0 && n <= SummedGrid::kMaxCellsPerLength))
+    throw std::invalid_argument(std::string("map: ") + what + " " + std::to_string(length) + " m is " +
+                                std::to_string(n) + " cells at " + std::to_string(resolution) +
+                                " m (at most " + std::to_string(SummedGrid::kMaxCellsPerLength) + ")");
+  return static_cast<int>(n);
+}
 }  // namespace
 
-SummedGrid::SummedGrid(double resolution, double half_size, double grow_margin)
-    : resolution_(resolution),
-      margin_cells_(static_cast<int>(std::ceil(grow_margin / resolution)))
+SummedGrid::SummedGrid(double resolution, double half_size, double grow_margin) : resolution_(resolution)
 {
-  if (!(resolution > 0) || !(half_size > 0))
-    throw std::invalid_argument("map: resolution and half size must be > 0");
-  const int h = static_cast<int>(std::ceil(half_size / resolution));
+  if (!(resolution > 0) || !(half_size > 0) || !(grow_margin >= 0))
+    throw std::invalid_argument("map: resolution and half size must be > 0, grow margin >= 0");
+  margin_cells_ = cellCount(grow_margin, resolution, "grow margin");
+  const int h = cellCount(half_size, resolution, "half size");
   box_ = CellBox{-h, -h, h, h};
   tile_box_ = tilesCovering(box_);
   tiles_.resize(static_cast<size_t>(tile_box_.width()) * tile_box_.height());

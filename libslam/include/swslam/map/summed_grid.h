@@ -22,9 +22,12 @@ class SummedGrid
  public:
   /** Cells per side of a tile of sums. */
   static constexpr int kTileSize = 64;
+  /** Largest half size and grow margin, in cells (the first map then has at most 2^28 cells). */
+  static constexpr int kMaxCellsPerLength = 1 << 13;
 
   /** Empty map covering [-half_size, half_size]^2; grows by `grow_margin` [m] beyond any
-   * contribution that leaves it. */
+   * contribution that leaves it. Throws std::invalid_argument unless resolution and half size
+   * are > 0, the margin >= 0, and both lengths at most kMaxCellsPerLength cells. */
   SummedGrid(double resolution, double half_size, double grow_margin);
 
   /** Adds `sign` (+1 or -1) times `c` to the sums and refreshes the mirrored cells. */
