@@ -11,10 +11,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <thread>
+#include <tuple>
+#include <vector>
 
 #include "test_support.h"
 
@@ -173,5 +177,27 @@ TEST(LiveRun, MalformedRepliesAreReportedAndTheRunSurvives)
   EXPECT_GT(recorded, 150u);
   EXPECT_NE(err.str().find("sensor driver:"), std::string::npos) << err.str();  // the truncated scan
   EXPECT_EQ(readTum(o.output + "/trajectory.tum").size(), recorded);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(LiveRun, BadTimingOptionsAreErrorsBeforeAnyConnection)
+{
+  const std::string dir = test::tempDir("live_bad_options");
+  for (const auto& [stall, save, duration] :
+       std::vector<std::tuple<double, double, double>>{{0, 30, 1},
+                                                       {1e300, 30, 1},
+                                                       {std::nan(""), 30, 1},
+                                                       {2, -1, 1},
+                                                       {2, 30, std::numeric_limits<double>::infinity()}})
+  {
+    LiveRunOptions o = liveOptions(dir, 1, 1);  // port 1: nothing listens, nothing is tried
+    o.stall_timeout = stall;
+    o.save_period = save;
+    o.duration = duration;
+    std::ostringstream out, err;
+    EXPECT_EQ(runLive(o, out, err), kExitUsage) << stall << " " << save << " " << duration;
+    EXPECT_NE(err.str().find("must be"), std::string::npos) << err.str();
+    EXPECT_FALSE(std::filesystem::exists(o.output)) << "an output folder was made";
+  }
   std::filesystem::remove_all(dir);
 }

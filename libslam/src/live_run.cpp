@@ -12,6 +12,7 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -57,6 +58,12 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   std::unique_ptr<RawlogRecorder> recorder;
   try
   {
+    // Checked before the stall timeout becomes whole milliseconds (a cast of a huge or NaN value).
+    if (!(opts.stall_timeout > 0 && opts.stall_timeout <= 3600))
+      throw std::invalid_argument("--stall-timeout " + std::to_string(opts.stall_timeout) + " must be in (0, 3600] s");
+    if (!(opts.save_period >= 0) || !(opts.duration >= 0) || !std::isfinite(opts.save_period) ||
+        !std::isfinite(opts.duration))
+      throw std::invalid_argument("--save-period and --duration must be finite and >= 0");
     for (const std::string& f : {opts.config, opts.sensor_config})
       if (!f.empty() && !std::filesystem::is_regular_file(f))
         throw std::invalid_argument("config: cannot read '" + f + "'");
