@@ -12,4 +12,10 @@ test -f "$work/prefix/share/swslam/config/default.ini" || { echo "config not ins
 cmake -S "$src/tests/consumer" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
 cmake --build "$work/build" -j 2 > "$work/build.log" || { cat "$work/build.log"; exit 1; }
-"$work/build/consumer"
+# In a sanitized build (doc/sanitizers.md) the consumer links the sanitizer runtime but not our
+# default options: give it the suppressions of what is not ours (ignored by normal builds).
+sup=$src/cmake/sanitizers
+LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$sup/lsan.supp} \
+UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1:suppressions=$sup/ubsan.supp} \
+TSAN_OPTIONS=${TSAN_OPTIONS:-suppressions=$sup/tsan.supp} \
+  "$work/build/consumer"
