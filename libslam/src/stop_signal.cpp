@@ -1,12 +1,17 @@
 #include "swslam/system/stop_signal.h"
 
+#include <atomic>
 #include <csignal>
 
 namespace swslam
 {
 namespace
 {
-volatile std::sig_atomic_t g_signal = 0;
+// The handler runs on whichever thread the kernel picks (the module threads do not block the
+// signals) and the run loop reads the flag on another: a volatile sig_atomic_t is only safe
+// within one thread, a lock-free atomic is safe across threads and in a signal handler.
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal flag must be lock-free");
 struct sigaction g_old_int, g_old_term;
 
 extern "C" void onStopSignal(int sig)
