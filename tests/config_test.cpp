@@ -118,6 +118,35 @@ TEST(Config, AMapTooLargeToAllocateIsAnErrorNotACrash)
   EXPECT_NO_THROW(loadSystemParams(ok));
 }
 
+TEST(Config, ValuesThatWouldStallOrOverflowAreErrorsNamingTheKey)
+{
+  // Found by a sanitizer campaign: each passed the loader, then made a cast undefined (a huge
+  // kernel, an infinite cell or angle step, a huge decimation stride) or a run stall (PLICP
+  // running to a huge iteration cap on every scan).
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"[correlative]\nsigma = 1e12\n", "sigma"},
+      {"[correlative]\nsigma = 10\n", "sigma"},
+      {"[correlative]\nresolution = inf\n", "resolution"},
+      {"[correlative]\ntheta_step_DEG = inf\n", "theta_step_DEG"},
+      {"[correlative]\nwindow_theta_DEG = 1e300\n", "window_theta_DEG"},
+      {"[plicp]\npoint_spacing_DEG = 1e300\n", "point_spacing_DEG"},
+      {"[plicp]\nmax_iterations = 1000000\n", "max_iterations"},
+      {"[carmen]\nmax_range = 1e300\n", "max_range"}};
+  for (const auto& [text, key] : cases)
+  {
+    mrpt::config::CConfigFileMemory cfg(text);
+    try
+    {
+      loadSystemParams(cfg);
+      ADD_FAILURE() << "accepted: " << text;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Config, BrokenCrossSectionRuleIsAnErrorNamingBothKeys)
 {
   mrpt::config::CConfigFileMemory cfg(

@@ -16,6 +16,7 @@ void CarmenParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, co
   MRPT_LOAD_CONFIG_VAR(default_period, double, c, s);
   MRPT_LOAD_CONFIG_VAR(laser_only, bool, c, s);
   MRPT_LOAD_CONFIG_VAR(max_printed_warnings, uint64_t, c, s);
+  check();  // also when the input is a rawlog and no CARMEN log is read
 }
 
 void CarmenParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -36,7 +37,8 @@ void CarmenParams::check() const
   const auto fail = [](const std::string& key, const std::string& rule) {
     throw std::invalid_argument("[carmen] " + key + " must be " + rule);
   };
-  if (!(max_range >= 0)) fail("max_range", ">= 0 (0: from the log)");
+  // Stored as a float in MRPT's scan: a larger value would not convert.
+  if (!(max_range >= 0 && max_range <= 1e6)) fail("max_range", "in [0, 1e6] m (0: from the log)");
   if (!(saturation_rel_tol >= 0 && saturation_rel_tol < 1)) fail("saturation_rel_tol", "in [0, 1)");
   if (saturation_min_count < 1) fail("saturation_min_count", ">= 1");
   if (!(max_timestamp_gap > 0)) fail("max_timestamp_gap", "> 0");

@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/bits_math.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace swslam
@@ -40,13 +41,15 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
           "trigger_inlier_fraction must be in [0, 1]");
   require(trust_prediction_after >= 0, "trust_prediction_after must be >= 0");
   require(submap_keyframes >= 1, "submap_keyframes must be >= 1");
-  require(resolution > 0 && sigma > 0, "resolution and sigma must be > 0");
+  require(resolution > 0 && resolution <= 10 && sigma > 0, "resolution must be in (0, 10] m, sigma > 0");
+  // Each point's kernel covers (2 ceil(3 sigma / resolution) + 1)^2 cells of the score grid.
+  require(sigma <= 10 * resolution, "sigma must be at most 10 resolution");
   require(free_space_score >= -1 && free_space_score <= 0, "free_space_score must be in [-1, 0]");
   // Bounds that keep the pyramid (padded by the window) and the rotated lattices in memory.
   require(window_xy >= 0 && window_xy <= 256 * resolution,
           "window_xy must be in [0, 256 resolution]");
-  require(window_theta >= 0, "window_theta_DEG must be >= 0");
-  require(theta_step >= mrpt::DEG2RAD(0.1), "theta_step_DEG must be >= 0.1");
+  require(window_theta >= 0 && window_theta <= 2 * M_PI, "window_theta_DEG must be in [0, 360]");
+  require(theta_step >= mrpt::DEG2RAD(0.1) && theta_step <= 2 * M_PI, "theta_step_DEG must be in [0.1, 360]");
   require(cost_per_m >= 0 && cost_per_rad >= 0, "cost_per_m and cost_per_rad must be >= 0");
   require(max_range > 0, "max_range must be > 0");
   require(min_score >= 0 && min_score <= 1, "min_score must be in [0, 1]");

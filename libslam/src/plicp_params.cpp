@@ -36,7 +36,8 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
-  require(max_iterations >= 1, "max_iterations must be >= 1");
+  // A match that never settles runs to the cap, on every scan: bounded so that a run cannot stall.
+  require(max_iterations >= 1 && max_iterations <= 1000, "max_iterations must be in [1, 1000]");
   require(epsilon_xy > 0 && epsilon_theta > 0, "epsilon_xy and epsilon_theta_DEG must be > 0");
   require(max_correspondence_dist > 0, "max_correspondence_dist must be > 0");
   require(initial_correspondence_dist >= max_correspondence_dist,
@@ -47,7 +48,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   require(retry_rotation_step > 0, "retry_rotation_step_DEG must be > 0");
   require(retry_min_gain >= 1, "retry_min_gain must be >= 1");
   require(coarse_start_fraction >= 0 && coarse_start_fraction <= 1, "coarse_start_fraction must be in [0, 1]");
-  require(point_spacing >= 0, "point_spacing_DEG must be >= 0");
+  require(point_spacing >= 0 && point_spacing <= 2 * M_PI, "point_spacing_DEG must be in [0, 360]");
   require(min_segment_length >= 0, "min_segment_length must be >= 0");
   require(trim_keep_fraction > 0 && trim_keep_fraction <= 1, "trim_keep_fraction must be in (0, 1]");
   require(adaptive_quantile > 0 && adaptive_quantile <= 1, "adaptive_quantile must be in (0, 1]");
