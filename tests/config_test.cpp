@@ -147,6 +147,30 @@ TEST(Config, ValuesThatWouldStallOrOverflowAreErrorsNamingTheKey)
   }
 }
 
+TEST(Config, AnIntegerKeyReadAsAnotherNumberIsAnError)
+{
+  // MRPT's reader takes the leading digits of an integer key ("1e3" as 1, "2.5" as 2) and an
+  // unsigned "-1" as 2^64 - 1, silently.
+  for (const char* text : {"[plicp]\nmax_iterations = 1e3\n", "[plicp]\nmax_iterations = 40.5\n",
+                           "[graph_optimizer]\nfull_optimization_interval = -1\n"})
+  {
+    mrpt::config::CConfigFileMemory cfg(text);
+    try
+    {
+      loadSystemParams(cfg);
+      ADD_FAILURE() << "accepted: " << text;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("is not an integer"), std::string::npos) << e.what();
+    }
+  }
+  // The same numbers written as integers, and floating-point keys, are taken.
+  mrpt::config::CConfigFileMemory ok("[plicp]\nmax_iterations = 1000\nepsilon_xy = 1e-3\n"
+                                     "[graph_optimizer]\nfull_optimization_interval = 3\n");
+  EXPECT_NO_THROW(loadSystemParams(ok));
+}
+
 TEST(Config, BrokenCrossSectionRuleIsAnErrorNamingBothKeys)
 {
   mrpt::config::CConfigFileMemory cfg(

@@ -98,6 +98,34 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
   }
 }
 
+void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                   const mrpt::config::CLoadableOptions& loaded)
+{
+  mrpt::config::CConfigFileMemory saved_cfg;
+  loaded.saveToConfigFile(saved_cfg, section);
+  std::vector<std::string> saved_keys, present;
+  saved_cfg.getAllKeys(section, saved_keys);
+  cfg.getAllKeys(section, present);
+  for (const auto& saved_key : saved_keys)
+  {
+    std::string saved = saved_cfg.read_string(section, saved_key, "");
+    saved = mrpt::system::trim(saved.substr(0, saved.find("//")));  // MRPT appends " // comment"
+    // MRPT writes an integer with "%i" (digits, maybe a sign), a floating-point number with
+    // a point or an exponent.
+    const size_t first = saved.empty() || saved[0] != '-' ? 0 : 1;
+    if (first == saved.size() || saved.find_first_not_of("0123456789", first) != std::string::npos) continue;
+    const std::string key = mrpt::system::trim(saved_key);
+    const auto it = std::find_if(present.begin(), present.end(), [&](const std::string& k) {
+      return mrpt::system::strCmpI(mrpt::system::trim(k), key);
+    });
+    if (it == present.end()) continue;  // the default stays
+    const std::string value = mrpt::system::trim(cfg.read_string(section, *it, ""));
+    if (std::strtod(value.c_str(), nullptr) != std::strtod(saved.c_str(), nullptr))
+      throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value +
+                                  "' is not an integer in the key's range (it would be read as " + saved + ")");
+  }
+}
+
 void checkIniLines(const std::string& text, const std::string& source)
 {
   std::map<std::string, size_t> seen;  // "section\nkey" (lower case) -> line

@@ -63,6 +63,7 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg,
   {
     checkKnownKeys(cfg, name, *module);
     module->loadFromConfigFile(cfg, name);
+    checkReadBack(cfg, name, *module);
   }
   checkCrossSectionRules(p);
   return p;

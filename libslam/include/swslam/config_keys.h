@@ -19,6 +19,13 @@ namespace swslam
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                     const mrpt::config::CLoadableOptions& params);
 
+/** Call after `loaded.loadFromConfigFile(cfg, section)`. Throws std::invalid_argument if an
+ * integer key of `section` was read as another number than its value says: MRPT's reader
+ * takes "1e19" or "2.5" as 1 or 2 and an unsigned "-1" as 2^64 - 1, silently. An integer key
+ * is one whose loaded value `saveToConfigFile()` writes as a plain integer. */
+void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                   const mrpt::config::CLoadableOptions& loaded);
+
 /** Throws std::invalid_argument naming `source` and the line if a line of the .ini `text` is
  * neither blank, a comment (# or ;), '[section]' nor 'key = value' (MRPT's reader skips such
  * lines silently), or sets a key its section already set (MRPT keeps one, silently). */
@@ -28,13 +35,14 @@ void checkIniLines(const std::string& text, const std::string& source);
 void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,
                         const std::vector<std::string>& allowed);
 
-/** checkKnownKeys() then params.loadFromConfigFile(). */
+/** checkKnownKeys(), params.loadFromConfigFile(), then checkReadBack(). */
 template <class Params>
 Params loadStrict(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
   Params p;
   checkKnownKeys(cfg, section, p);
   p.loadFromConfigFile(cfg, section);
+  checkReadBack(cfg, section, p);
   return p;
 }
 
