@@ -23,12 +23,18 @@ std::string joined(const std::vector<std::string>& v)
 
 enum class ValueKind { Bool, Number, Text };
 
+/** A value as saveToConfigFile() wrote it, without the " // comment" MRPT appends. */
+std::string savedValue(const std::string& written)
+{
+  return mrpt::system::trim(written.substr(0, written.find("//")));
+}
+
 /** The kind of a key, from the text saveToConfigFile() writes for its default: true/false, a
  * number, or other text. (Integers cannot be told from floating-point numbers this way: some
  * savers write 2.0 as "2".) */
-ValueKind kindOf(std::string saved)
+ValueKind kindOf(const std::string& written)
 {
-  saved = mrpt::system::trim(saved.substr(0, saved.find("//")));  // MRPT appends " // comment"
+  const std::string saved = savedValue(written);
   const std::string lower = mrpt::system::lowerCase(saved);
   if (lower == "true" || lower == "false") return ValueKind::Bool;
   if (saved.empty()) return ValueKind::Text;
@@ -108,8 +114,7 @@ void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& 
   cfg.getAllKeys(section, present);
   for (const auto& saved_key : saved_keys)
   {
-    std::string saved = saved_cfg.read_string(section, saved_key, "");
-    saved = mrpt::system::trim(saved.substr(0, saved.find("//")));  // MRPT appends " // comment"
+    const std::string saved = savedValue(saved_cfg.read_string(section, saved_key, ""));
     // MRPT writes an integer with "%i" (digits, maybe a sign), a floating-point number with
     // a point or an exponent.
     const size_t first = saved.empty() || saved[0] != '-' ? 0 : 1;
