@@ -97,23 +97,30 @@ TEST(Config, OutOfRangeValueIsAnError)
   EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
 }
 
+namespace
+{
+/** Loading `text` fails with an error whose message contains `expected`. */
+void expectLoadError(const std::string& text, const std::string& expected)
+{
+  mrpt::config::CConfigFileMemory cfg(text);
+  try
+  {
+    loadSystemParams(cfg);
+    ADD_FAILURE() << "accepted: " << text;
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
 TEST(Config, AMapTooLargeToAllocateIsAnErrorNotACrash)
 {
   // An infinite or huge first map would be cast to a cell count past an int's range.
   for (const char* text : {"[map]\ninitial_half_size = inf\n", "[map]\ninitial_half_size = 1e9\n",
                            "[map]\ngrow_margin = 1e9\n", "[map]\nresolution = 0.005\ninitial_half_size = 41\n"})
-  {
-    mrpt::config::CConfigFileMemory cfg(text);
-    try
-    {
-      loadSystemParams(cfg);
-      ADD_FAILURE() << "accepted: " << text;
-    }
-    catch (const std::invalid_argument& e)
-    {
-      EXPECT_NE(std::string(e.what()).find("at most 8192 cells"), std::string::npos) << e.what();
-    }
-  }
+    expectLoadError(text, "at most 8192 cells");
   mrpt::config::CConfigFileMemory ok("[map]\nresolution = 0.005\ninitial_half_size = 40\n");
   EXPECT_NO_THROW(loadSystemParams(ok));
 }
@@ -133,18 +140,7 @@ TEST(Config, ValuesThatWouldStallOrOverflowAreErrorsNamingTheKey)
       {"[plicp]\nmax_iterations = 1000000\n", "max_iterations"},
       {"[carmen]\nmax_range = 1e300\n", "max_range"}};
   for (const auto& [text, key] : cases)
-  {
-    mrpt::config::CConfigFileMemory cfg(text);
-    try
-    {
-      loadSystemParams(cfg);
-      ADD_FAILURE() << "accepted: " << text;
-    }
-    catch (const std::invalid_argument& e)
-    {
-      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
-    }
-  }
+    expectLoadError(text, key);
 }
 
 TEST(Config, AnIntegerKeyReadAsAnotherNumberIsAnError)
@@ -153,18 +149,7 @@ TEST(Config, AnIntegerKeyReadAsAnotherNumberIsAnError)
   // unsigned "-1" as 2^64 - 1, silently.
   for (const char* text : {"[plicp]\nmax_iterations = 1e3\n", "[plicp]\nmax_iterations = 40.5\n",
                            "[graph_optimizer]\nfull_optimization_interval = -1\n"})
-  {
-    mrpt::config::CConfigFileMemory cfg(text);
-    try
-    {
-      loadSystemParams(cfg);
-      ADD_FAILURE() << "accepted: " << text;
-    }
-    catch (const std::invalid_argument& e)
-    {
-      EXPECT_NE(std::string(e.what()).find("is not an integer"), std::string::npos) << e.what();
-    }
-  }
+    expectLoadError(text, "is not an integer");
   // The same numbers written as integers, and floating-point keys, are taken.
   mrpt::config::CConfigFileMemory ok("[plicp]\nmax_iterations = 1000\nepsilon_xy = 1e-3\n"
                                      "[graph_optimizer]\nfull_optimization_interval = 3\n");

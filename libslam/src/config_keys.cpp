@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <cmath>
 #include <cstdlib>
@@ -32,9 +33,8 @@ std::string savedValue(const std::string& written)
 /** The kind of a key, from the text saveToConfigFile() writes for its default: true/false, a
  * number, or other text. (Integers cannot be told from floating-point numbers this way: some
  * savers write 2.0 as "2".) */
-ValueKind kindOf(const std::string& written)
+ValueKind kindOf(const std::string& saved)
 {
-  const std::string saved = savedValue(written);
   const std::string lower = mrpt::system::lowerCase(saved);
   if (lower == "true" || lower == "false") return ValueKind::Bool;
   if (saved.empty()) return ValueKind::Text;
@@ -70,65 +70,83 @@ std::string valueProblem(ValueKind kind, const std::string& value)
 }
 }  // namespace
 
+namespace
+{
+/** The keys and values that `params.saveToConfigFile()` writes into `section`, found by name
+ * as a config file spells it (any case; MRPT pads names when it writes commented keys). */
+class SavedSection
+{
+ public:
+  SavedSection(const mrpt::config::CLoadableOptions& params, const std::string& section) : section_(section)
+  {
+    params.saveToConfigFile(cfg_, section);
+    cfg_.getAllKeys(section, padded_);
+    for (const auto& k : padded_) names_.push_back(mrpt::system::trim(k));
+  }
+  /** The saved value (without MRPT's appended comment) of `key`, or nullopt if not saved. */
+  std::optional<std::string> value(const std::string& key) const
+  {
+    const auto it = std::find_if(names_.begin(), names_.end(),
+                                 [&](const std::string& k) { return mrpt::system::strCmpI(k, key); });
+    if (it == names_.end()) return std::nullopt;
+    return savedValue(cfg_.read_string(section_, padded_[it - names_.begin()], ""));
+  }
+  const std::vector<std::string>& names() const { return names_; }
+
+ private:
+  std::string section_;
+  mrpt::config::CConfigFileMemory cfg_;
+  std::vector<std::string> padded_, names_;
+};
+
+/** Each key of `section` in `cfg`: its trimmed name and its value as written. */
+template <class Visit>
+void forEachKey(const mrpt::config::CConfigFileBase& cfg, const std::string& section, Visit visit)
+{
+  std::vector<std::string> present;
+  cfg.getAllKeys(section, present);
+  for (const auto& padded_key : present)
+    visit(mrpt::system::trim(padded_key), cfg.read_string(section, padded_key, ""));
+}
+}  // namespace
+
 void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                     const mrpt::config::CLoadableOptions& params)
 {
-  mrpt::config::CConfigFileMemory known_cfg;
-  params.saveToConfigFile(known_cfg, section);
-  std::vector<std::string> known, present;
-  known_cfg.getAllKeys(section, known);
-  cfg.getAllKeys(section, present);
-  // MRPT pads names when it writes commented keys: compare trimmed names.
-  const std::vector<std::string> known_padded = known;
-  for (auto& k : known) k = mrpt::system::trim(k);
-  for (const auto& padded_key : present)
-  {
-    const std::string key = mrpt::system::trim(padded_key);
-    const auto it = std::find_if(known.begin(), known.end(), [&](const std::string& k) {
-      return mrpt::system::strCmpI(k, key);
-    });
-    if (it == known.end())
+  const SavedSection known(params, section);
+  forEachKey(cfg, section, [&](const std::string& key, const std::string& value) {
+    const std::optional<std::string> saved = known.value(key);
+    if (!saved)
       throw std::invalid_argument("config: unknown key '" + key + "' in section [" + section +
-                                  "]; known keys: " + joined(known));
+                                  "]; known keys: " + joined(known.names()));
     // MRPT's reader keeps the rest of the line in the value: "true  # note" would read as
     // false, silently. Comments go on lines of their own.
-    const std::string value = cfg.read_string(section, padded_key, "");
     if (value.find(" #") != std::string::npos || value.find("\t#") != std::string::npos ||
         value.find(" ;") != std::string::npos)
       throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value +
                                   "': comments must be on a line of their own");
-    const std::string problem =
-        valueProblem(kindOf(known_cfg.read_string(section, known_padded[it - known.begin()], "")), value);
+    const std::string problem = valueProblem(kindOf(*saved), value);
     if (!problem.empty())
       throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value + "' " + problem);
-  }
+  });
 }
 
 void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                    const mrpt::config::CLoadableOptions& loaded)
 {
-  mrpt::config::CConfigFileMemory saved_cfg;
-  loaded.saveToConfigFile(saved_cfg, section);
-  std::vector<std::string> saved_keys, present;
-  saved_cfg.getAllKeys(section, saved_keys);
-  cfg.getAllKeys(section, present);
-  for (const auto& saved_key : saved_keys)
-  {
-    const std::string saved = savedValue(saved_cfg.read_string(section, saved_key, ""));
-    // MRPT writes an integer with "%i" (digits, maybe a sign), a floating-point number with
-    // a point or an exponent.
-    const size_t first = saved.empty() || saved[0] != '-' ? 0 : 1;
-    if (first == saved.size() || saved.find_first_not_of("0123456789", first) != std::string::npos) continue;
-    const std::string key = mrpt::system::trim(saved_key);
-    const auto it = std::find_if(present.begin(), present.end(), [&](const std::string& k) {
-      return mrpt::system::strCmpI(mrpt::system::trim(k), key);
-    });
-    if (it == present.end()) continue;  // the default stays
-    const std::string value = mrpt::system::trim(cfg.read_string(section, *it, ""));
-    if (std::strtod(value.c_str(), nullptr) != std::strtod(saved.c_str(), nullptr))
+  const SavedSection saved_section(loaded, section);
+  forEachKey(cfg, section, [&](const std::string& key, const std::string& written) {
+    const std::optional<std::string> saved = saved_section.value(key);
+    if (!saved) return;
+    // Only a value saved as a plain integer can have been truncated or wrapped. A floating-point
+    // key saved that way (some savers write 2.0 as "2") was read as written, and compares equal.
+    const size_t first = saved->empty() || (*saved)[0] != '-' ? 0 : 1;
+    if (first == saved->size() || saved->find_first_not_of("0123456789", first) != std::string::npos) return;
+    const std::string value = mrpt::system::trim(written);
+    if (std::strtod(value.c_str(), nullptr) != std::strtod(saved->c_str(), nullptr))
       throw std::invalid_argument("config: [" + section + "] " + key + " = '" + value +
-                                  "' is not an integer in the key's range (it would be read as " + saved + ")");
-  }
+                                  "' is not an integer in the key's range (it would be read as " + *saved + ")");
+  });
 }
 
 void checkIniLines(const std::string& text, const std::string& source)

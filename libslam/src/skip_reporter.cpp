@@ -12,8 +12,7 @@ SkipReporter::SkipReporter(std::ostream& err, int max_printed, std::string prefi
 void SkipReporter::report(FeedStatus kind, size_t input_index, const std::string& why)
 {
   const size_t n = ++counts_[kind];
-  const bool taken = kind == FeedStatus::OdometryDropped || kind == FeedStatus::TimestampsResumed;
-  const char* what = taken ? "input scan " : "skipped input scan ";
+  const char* what = scanTaken(kind) ? "input scan " : "skipped input scan ";
   if (n <= max_) err_ << prefix_ << what << input_index << ": " << why << "\n";
   if (n == max_ + 1) err_ << prefix_ << "(further messages of this kind are only counted)\n";
 }

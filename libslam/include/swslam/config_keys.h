@@ -21,8 +21,8 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
 
 /** Call after `loaded.loadFromConfigFile(cfg, section)`. Throws std::invalid_argument if an
  * integer key of `section` was read as another number than its value says: MRPT's reader
- * takes "1e19" or "2.5" as 1 or 2 and an unsigned "-1" as 2^64 - 1, silently. An integer key
- * is one whose loaded value `saveToConfigFile()` writes as a plain integer. */
+ * takes "1e19" or "2.5" as 1 or 2 and an unsigned "-1" as 2^64 - 1, silently. Checked are the
+ * keys whose loaded value `saveToConfigFile()` writes as a plain integer. */
 void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                    const mrpt::config::CLoadableOptions& loaded);
 

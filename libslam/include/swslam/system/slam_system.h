@@ -48,16 +48,18 @@ enum class FeedStatus
   TimestampsResumed,       ///< taken: the scans behind a stamp that jumped forward resume the log
   Stopped,                 ///< the pipeline stopped (finish() was called or a module failed)
 };
+/** The scan was taken (possibly without its odometry), not skipped. */
+inline bool scanTaken(FeedStatus s)
+{
+  return s == FeedStatus::Accepted || s == FeedStatus::OdometryDropped || s == FeedStatus::TimestampsResumed;
+}
+
 struct FeedResult
 {
   FeedStatus status = FeedStatus::Accepted;
   std::string message;  ///< what was wrong: why a scan was skipped, or what of it was dropped
   /** The scan was taken (possibly without its odometry). */
-  bool ok() const
-  {
-    return status == FeedStatus::Accepted || status == FeedStatus::OdometryDropped ||
-           status == FeedStatus::TimestampsResumed;
-  }
+  bool ok() const { return scanTaken(status); }
 };
 
 /** A live summary (status line). */
