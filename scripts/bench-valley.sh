@@ -10,7 +10,9 @@
 #  6. MRPT's icp-slam on the valley rawlog: time and ATE;
 #  7. MRPT's driving_in_office_obs.rawlog from CARMEN_DIR (no ground truth), laser only and
 #     with odometry: each scan's motion against the log's odometry (scripts/odometry-steps.py;
-#     needs rawlog-edit from mrpt-apps, and python3).
+#     needs rawlog-edit from mrpt-apps, and python3);
+#  8. a long run, the valley path driven four times: throughput, graph module time, peak
+#     memory and ATE, with the default rule for full optimizations and with the paper's.
 # Usage: scripts/bench-valley.sh [CARMEN_DIR]   (default ../shared/datasets); writes out/bench-valley/
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -128,3 +130,27 @@ if [[ -f $office ]] && command -v rawlog-edit > /dev/null && command -v python3 
 else
   echo "skipped: needs $office, rawlog-edit (apt-get install mrpt-apps) and python3"
 fi
+
+echo "== 8. a long run: the valley path driven four times (about 2 km, 52,600 scans), deterministic, one core"
+# Repeated laps close a loop at almost every node. With the default config only loops that
+# disagree with the graph trigger a full optimization; the paper's rule (every loop) for
+# comparison: [graph_optimizer] full_optimization_loop_xy = full_optimization_loop_theta_DEG = 0.
+laps=$out/laps
+mkdir -p "$laps"
+awk '/^waypoints *=/ { w = $0; sub(/^waypoints *= */, "", w); print "waypoints = " w ", " w ", " w ", " w; next } { print }' \
+  datasets/scenarios/valley.ini > "$laps/valley-laps.ini"
+sed -e 's/^full_optimization_loop_xy *=.*/full_optimization_loop_xy = 0/' \
+    -e 's/^full_optimization_loop_theta_DEG *=.*/full_optimization_loop_theta_DEG = 0/' $cfg > "$laps/every-loop.ini"
+"$bin/swslam-sim" -q --scenario "$laps/valley-laps.ini" --output "$laps/data" > /dev/null
+for run in default every-loop; do
+  c=$cfg; [[ $run == every-loop ]] && c=$laps/every-loop.ini
+  /usr/bin/time -f "peak memory %M KiB" -o "$laps/$run.time" taskset -c 0 "$bin/swslam" -c "$c" \
+    -i "$laps/data/valley-laps.rawlog" -g "$laps/data/valley-laps.gt.tum" -o "$laps/$run" -d -q --no-render > /dev/null 2>&1
+  s=$laps/$run/summary.md
+  echo "$run: $(field 'Sensor time' "$s"); ATE $(field 'ATE (rmse)' "$s"); loops $(field 'Number of graph constraints' "$s"); $(cat "$laps/$run.time")"
+  # The last row holds the end of the run (final full optimization and refinement).
+  awk -F, 'NR > 1 { if (prev != "") { split(prev, p, ","); g += p[10]; if (p[15] == 1) { nf++; fg += p[10]; if (p[10] > mf) mf = p[10] } } prev = $0 }
+    END { split(prev, p, ","); printf "  graph module during the run %.1f s, %d full optimizations (max %.0f ms, %.1f s in all); end of run %.0f ms\n", g / 1000, nf, mf, fg / 1000, p[10] }' \
+    "$laps/$run/stats.csv"
+done
+rm -rf "$laps/data"

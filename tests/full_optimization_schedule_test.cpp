@@ -59,3 +59,24 @@ TEST(FullOptimizationSchedule, ZeroIntervalIsAnError)
 {
   EXPECT_THROW(swslam::FullOptimizationSchedule(0), std::invalid_argument);
 }
+
+TEST(FullOptimizationSchedule, OnlyALoopThatDisagreesWithTheGraphCorrectsIt)
+{
+  using mrpt::poses::CPose2D;
+  const CPose2D graph(3.0, 1.0, 0.4);  // newer node in the older node's frame, per the graph
+  const double xy = 0.05, theta = 0.5 * M_PI / 180;
+  // The measurement is the graph's relative pose moved by d, in the newer node's frame.
+  auto measured = [&](double dx, double dy, double dphi) { return graph + CPose2D(dx, dy, dphi); };
+  EXPECT_FALSE(swslam::loopCorrectsGraph(graph, graph, xy, theta));
+  EXPECT_FALSE(swslam::loopCorrectsGraph(graph, measured(0.03, -0.02, 0.005), xy, theta));
+  EXPECT_TRUE(swslam::loopCorrectsGraph(graph, measured(0.04, -0.04, 0.0), xy, theta));  // 5.7 cm
+  EXPECT_TRUE(swslam::loopCorrectsGraph(graph, measured(0.0, 0.0, -0.01), xy, theta));   // 0.57 deg
+  // Headings on either side of +-180 deg differ by their wrapped difference.
+  EXPECT_FALSE(swslam::loopCorrectsGraph(CPose2D(1, 2, M_PI - 0.001), CPose2D(1, 2, -M_PI + 0.001),
+                                         xy, theta));
+  EXPECT_TRUE(swslam::loopCorrectsGraph(CPose2D(1, 2, M_PI - 0.01), CPose2D(1, 2, -M_PI + 0.01),
+                                        xy, theta));
+  // Zero thresholds: every loop that is not exactly the graph's pose corrects it (the paper).
+  EXPECT_TRUE(swslam::loopCorrectsGraph(graph, measured(1e-6, 0, 0), 0, 0));
+  EXPECT_FALSE(swslam::loopCorrectsGraph(graph, graph, 0, 0));
+}

@@ -118,6 +118,8 @@ TEST(GraphOptimizerParams, DefaultIniLoadsStrictlyAndRoundTrips)
   EXPECT_EQ(p.kernel_c, d.kernel_c);
   EXPECT_EQ(p.window_size, d.window_size);
   EXPECT_EQ(p.full_optimization_interval, d.full_optimization_interval);
+  EXPECT_EQ(p.full_optimization_loop_xy, d.full_optimization_loop_xy);
+  EXPECT_NEAR(p.full_optimization_loop_theta, d.full_optimization_loop_theta, 1e-15);
   EXPECT_EQ(p.max_iterations, d.max_iterations);
   EXPECT_EQ(p.lm_initial_lambda, d.lm_initial_lambda);
   EXPECT_EQ(p.lm_max_lambda, d.lm_max_lambda);
@@ -159,4 +161,14 @@ TEST(GraphOptimizerParams, RejectsUnknownKeysAndBadValues)
   zero.write("graph_optimizer", "full_optimization_interval", 0);
   EXPECT_THROW(swslam::loadStrict<swslam::GraphOptimizerParams>(zero, "graph_optimizer"),
                std::invalid_argument);
+  for (const auto& [key, value] : {std::pair<const char*, double>{"full_optimization_loop_xy", -0.1},
+                                   {"full_optimization_loop_theta_DEG", -1.0},
+                                   {"full_optimization_loop_theta_DEG", 181.0}})
+  {
+    mrpt::config::CConfigFileMemory loop;
+    loop.write("graph_optimizer", key, value);
+    EXPECT_THROW(swslam::loadStrict<swslam::GraphOptimizerParams>(loop, "graph_optimizer"),
+                 std::invalid_argument)
+        << key << " = " << value;
+  }
 }

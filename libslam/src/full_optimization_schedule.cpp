@@ -1,9 +1,17 @@
 #include "swslam/system/full_optimization_schedule.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace swslam
 {
+bool loopCorrectsGraph(const mrpt::poses::CPose2D& graph_relative,
+                       const mrpt::poses::CPose2D& measured, double xy, double theta)
+{
+  const mrpt::poses::CPose2D d = measured - graph_relative;  // graph_relative^-1 (+) measured
+  return d.translation().norm() > xy || std::abs(d.phi()) > theta;
+}
+
 FullOptimizationSchedule::FullOptimizationSchedule(size_t interval) : interval_(interval)
 {
   if (interval == 0)

@@ -66,8 +66,8 @@ GraphStep GraphModule::addNode(const NewNode& node)
   }
   nodes_.push_back(ln);
 
-  step.loops_accepted = closeLoops(id, step);
-  optimize(schedule_.fullNow(id, step.loops_accepted), step);
+  const size_t correcting = closeLoops(id, step);
+  optimize(schedule_.fullNow(id, correcting), step);
   step.insert = MapInsert{node.scan, id, node.observation,
                           step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
   return step;
@@ -76,7 +76,7 @@ GraphStep GraphModule::addNode(const NewNode& node)
 size_t GraphModule::closeLoops(size_t id, GraphStep& step)
 {
   if (!loop_params_.enabled) return 0;
-  size_t accepted = 0;
+  size_t correcting = 0;
   const auto checks = checkLoops(
       graph_, nodes_.at(id), [this](size_t n) { return nodes_.at(n); }, loop_params_, plicp_params_,
       search_params_);
@@ -92,15 +92,21 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
   for (const TrackerEdge& e : corroborated)
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    const bool corrects =
+        graph_.hasNode(e.from) && graph_.hasNode(e.to) &&
+        loopCorrectsGraph(graph_.pose(e.to) - graph_.pose(e.from), e.z,
+                          graph_params_.full_optimization_loop_xy,
+                          graph_params_.full_optimization_loop_theta);
     const size_t before = step.edges_rejected;
     addEdge(e, step);
     if (step.edges_rejected == before)
     {
-      accepted++;
+      step.loops_accepted++;
+      correcting += corrects;
       loops_++;
     }
   }
-  return accepted;
+  return correcting;
 }
 
 void GraphModule::optimize(bool full, GraphStep& step)

@@ -1,6 +1,7 @@
 #include "swslam/graph_optimizer_params.h"
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/core/bits_math.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -36,6 +37,11 @@ void GraphOptimizerParams::check() const
   if (window_size < 2) throw std::invalid_argument("graph_optimizer: window_size must be >= 2");
   if (full_optimization_interval < 1)
     throw std::invalid_argument("graph_optimizer: full_optimization_interval must be >= 1");
+  if (!(full_optimization_loop_xy >= 0) || !std::isfinite(full_optimization_loop_xy))
+    throw std::invalid_argument("graph_optimizer: full_optimization_loop_xy must be finite and >= 0");
+  if (!(full_optimization_loop_theta >= 0) || full_optimization_loop_theta > M_PI)
+    throw std::invalid_argument(
+        "graph_optimizer: full_optimization_loop_theta_DEG must be in [0, 180]");
   if (max_iterations < 1)
     throw std::invalid_argument("graph_optimizer: max_iterations must be >= 1");
 }
@@ -52,6 +58,9 @@ void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBas
   window_size = c.read_uint64_t(s, "window_size", window_size);
   full_optimization_interval =
       c.read_uint64_t(s, "full_optimization_interval", full_optimization_interval);
+  MRPT_LOAD_CONFIG_VAR(full_optimization_loop_xy, double, c, s);
+  full_optimization_loop_theta = mrpt::DEG2RAD(c.read_double(
+      s, "full_optimization_loop_theta_DEG", mrpt::RAD2DEG(full_optimization_loop_theta)));
   max_iterations = c.read_uint64_t(s, "max_iterations", max_iterations);
   MRPT_LOAD_CONFIG_VAR(lm_initial_lambda, double, c, s);
   MRPT_LOAD_CONFIG_VAR(lm_max_lambda, double, c, s);
@@ -77,6 +86,10 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
           "newest nodes optimized per sliding-window update");
   c.write(s, "full_optimization_interval", static_cast<uint64_t>(full_optimization_interval), -1,
           -1, "nodes from one full optimization after loops to the next at least");
+  c.write(s, "full_optimization_loop_xy", full_optimization_loop_xy, -1, -1,
+          "[m] only a loop this far from the graph's relative pose asks for a full optimization...");
+  c.write(s, "full_optimization_loop_theta_DEG", mrpt::RAD2DEG(full_optimization_loop_theta), -1,
+          -1, "[deg] ...or turned this much from it");
   c.write(s, "max_iterations", static_cast<uint64_t>(max_iterations), -1, -1,
           "Levenberg-Marquardt iterations at most");
   c.write(s, "lm_initial_lambda", lm_initial_lambda, -1, -1, "initial damping, relative to diag(H)");

@@ -6,6 +6,7 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <cmath>
 #include <cstddef>
 
 namespace swslam
@@ -26,6 +27,11 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
   /** A full optimization after a loop waits until this many nodes have passed since the last
    * one (loops accepted meanwhile get the window); 1: after every node that closes a loop. */
   size_t full_optimization_interval = 5;
+  /** Only a loop that differs from the graph's relative pose of its nodes by more than this
+   * [m] or full_optimization_loop_theta [rad] asks for a full optimization; the window takes
+   * the others (0 and 0: every loop, the paper's rule). */
+  double full_optimization_loop_xy = 0.05;
+  double full_optimization_loop_theta = 0.5 * M_PI / 180;
 
   size_t max_iterations = 100;        ///< LM iterations (paper: 100)
   double lm_initial_lambda = 1e-4;    ///< damping relative to diag(H) at the first iteration

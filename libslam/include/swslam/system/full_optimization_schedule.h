@@ -6,12 +6,27 @@
 // fixed). The pending full optimization runs at the first node `interval` nodes after the
 // last one, whether or not that node closes a loop itself. With interval 1, every node that
 // closes a loop optimizes the whole graph.
+//
+// Only a loop that disagrees with the graph asks for a full optimization (loopCorrectsGraph):
+// when a path is driven again, each new node already sits where its loops say, the window
+// absorbs them, and optimizing the whole graph again and again would only cost time, growing
+// with the graph.
+
+#include <mrpt/poses/CPose2D.h>
 
 #include <cstddef>
 #include <optional>
 
 namespace swslam
 {
+/** True if a loop measurement `measured` (pose of its newer node in the older node's frame)
+ * differs from the graph's current relative pose `graph_relative` by more than `xy` [m] in
+ * translation or `theta` [rad] in rotation: the loop would move the graph, and only the whole
+ * graph's optimization spreads such a correction along the loop. With xy = theta = 0 every
+ * loop does (the paper's rule). */
+bool loopCorrectsGraph(const mrpt::poses::CPose2D& graph_relative,
+                       const mrpt::poses::CPose2D& measured, double xy, double theta);
+
 class FullOptimizationSchedule
 {
  public:

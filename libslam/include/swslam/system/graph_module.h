@@ -46,8 +46,8 @@ class GraphModule
               const PlicpParams& plicp, const std::optional<CorrelativeParams>& search = std::nullopt);
 
   /** Adds the node (its pose re-based on the graph's estimate of the previous node), its
-   * edges and any verified loop, then optimizes the window, or everything after a loop
-   * (FullOptimizationSchedule). */
+   * edges and any verified loop, then optimizes the window, or everything after a loop that
+   * corrects the graph (FullOptimizationSchedule, loopCorrectsGraph). */
   GraphStep addNode(const NewNode& node);
 
   /** Optimizes the whole graph (e.g. at the end of a run). */
@@ -64,6 +64,9 @@ class GraphModule
 
  private:
   void addEdge(const TrackerEdge& e, GraphStep& step);
+  /** Checks node `id`'s loop candidates and adds the corroborated loops (counted in
+   * step.loops_accepted); returns how many of them disagree with the graph enough to ask
+   * for a full optimization (loopCorrectsGraph). */
   size_t closeLoops(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
 
