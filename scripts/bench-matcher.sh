@@ -14,7 +14,7 @@ trap 'rm -rf "$work"' EXIT
 pin=()
 if command -v taskset > /dev/null; then pin=(taskset -c 0); fi
 run() {  # rawlog gt
-  "${pin[@]}" "$bin/swslam-bench-matcher" --input "$1" --ground-truth "$2" --config config/default.ini
+  "${pin[@]}" "$bin/swslam-bench-matcher" --input "$1" --ground-truth "$2" --config config/default.ini --floor
 }
 run datasets/lake-short/lake-short.rawlog datasets/lake-short/lake-short.gt.tum
 shopt -s nullglob

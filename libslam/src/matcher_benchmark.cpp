@@ -1,5 +1,7 @@
 #include "swslam/matcher_benchmark.h"
 
+#include "swslam/plicp/correspondences.h"
+#include "swslam/plicp/run.h"
 #include "swslam/rawlog_reader.h"
 #include "swslam/tracking/searched_match.h"
 #include "swslam/tracking/sensor_frame.h"
@@ -189,6 +191,51 @@ std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t str
     }
   }
   return rows;
+}
+
+PlicpFloor plicpFloor(const ScansWithTruth& data, size_t stride, const PlicpParams& params)
+{
+  PlicpFloor f;
+  std::vector<double> conversion, index, search, total;
+  for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+  {
+    const CObservation2DRangeScan& a = *data.scans[k];
+    const CPose2D guess =
+        sensorMotion(CPose2D(a.sensorPose), data.truth[k + stride] - data.truth[k]);
+    mrpt::system::CTicTac timer;
+    Scan ref_scan = scanFromObservation(a);
+    const Scan cur = scanFromObservation(*data.scans[k + stride]);
+    const double t_conversion = timer.Tac();
+    timer.Tic();
+    const ReferenceScan ref(std::move(ref_scan), params);
+    const double t_index = timer.Tac();
+    timer.Tic();
+    plicp::findCorrespondences(
+        ref.scan, ref.index, plicp::transformed(cur, Eigen::Vector3d(guess.x(), guess.y(), guess.phi())),
+        params.max_correspondence_dist);
+    const double t_search = timer.Tac();
+    conversion.push_back(t_conversion * 1e6);
+    index.push_back(t_index * 1e6);
+    search.push_back(t_search * 1e6);
+    total.push_back((t_conversion + t_index + t_search) * 1e6);
+  }
+  f.pairs = total.size();
+  f.conversion_us = quantile(conversion, 0.5);
+  f.index_us = quantile(index, 0.5);
+  f.search_us = quantile(search, 0.5);
+  f.total_us = quantile(total, 0.5);
+  return f;
+}
+
+std::string formatFloor(const PlicpFloor& f)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof(buf),
+                "%-13s init=%-9s pairs=%zu median_us=%.1f conversion_us=%.1f index_us=%.1f "
+                "search_us=%.1f",
+                "plicp-floor", "reference", f.pairs, f.total_us, f.conversion_us, f.index_us,
+                f.search_us);
+  return buf;
 }
 
 std::string formatRow(const MatcherRow& r)

@@ -47,6 +47,21 @@ std::vector<MatcherRow> benchmarkMatchers(const ScansWithTruth& data, size_t str
                                           const std::string& only = "",
                                           const CorrelativeParams& search_params = {});
 
+/** The work every PLICP match at full resolution does before its first closed-form step, on
+ * the pairs of benchmarkMatchers() from the reference guess: both scans converted
+ * (scanFromObservation), the reference scan's index built (ReferenceScan) and one
+ * correspondence search. Median microseconds of each part and of their per-pair sum: no
+ * PLICP of this design matches faster than `total_us`. */
+struct PlicpFloor
+{
+  size_t pairs = 0;
+  double conversion_us = 0, index_us = 0, search_us = 0, total_us = 0;
+};
+PlicpFloor plicpFloor(const ScansWithTruth& data, size_t stride, const PlicpParams& params);
+
+/** "plicp-floor init=reference pairs=... median_us=... conversion_us=... index_us=... search_us=...". */
+std::string formatFloor(const PlicpFloor& floor);
+
 /** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
 std::string formatRow(const MatcherRow& row);
 
