@@ -15,7 +15,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<size_t> stride("s", "stride", "Pair scans k and k+K", false, 1, "K", cmd);
   TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] and [correlative] sections)", false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> only("m", "method", "Run only this matcher (plicp, plicp+search, cicp-classic, cicp-lm)", false, "", "NAME", cmd);
-  TCLAP::SwitchArg floor("f", "floor", "Also time the work of any full-resolution PLICP match before its first step (scan conversion, reference index, one search)", cmd);
+  TCLAP::SwitchArg floor_arg("f", "floor", "Also time the work of any full-resolution PLICP match before its first step (scan conversion, reference index, one search)", cmd);
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
@@ -35,7 +35,7 @@ int main(int argc, char** argv)
               << stride.getValue() << "\n";
     for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search))
       std::cout << swslam::formatRow(row) << std::endl;
-    if (floor.getValue())
+    if (floor_arg.getValue())
       std::cout << swslam::formatFloor(swslam::plicpFloor(data, stride.getValue(), params)) << std::endl;
     return 0;
   }

@@ -140,14 +140,14 @@ mkdir -p "$laps"
 awk '/^waypoints *=/ { w = $0; sub(/^waypoints *= */, "", w); print "waypoints = " w ", " w ", " w ", " w; next } { print }' \
   datasets/scenarios/valley.ini > "$laps/valley-laps.ini"
 sed -e 's/^full_optimization_loop_xy *=.*/full_optimization_loop_xy = 0/' \
-    -e 's/^full_optimization_loop_theta_DEG *=.*/full_optimization_loop_theta_DEG = 0/' $cfg > "$laps/every-loop.ini"
+    -e 's/^full_optimization_loop_theta_DEG *=.*/full_optimization_loop_theta_DEG = 0/' "$cfg" > "$laps/every-loop.ini"
 "$bin/swslam-sim" -q --scenario "$laps/valley-laps.ini" --output "$laps/data" > /dev/null
 for run in default every-loop; do
   c=$cfg; [[ $run == every-loop ]] && c=$laps/every-loop.ini
   /usr/bin/time -f "peak memory %M KiB" -o "$laps/$run.time" taskset -c 0 "$bin/swslam" -c "$c" \
     -i "$laps/data/valley-laps.rawlog" -g "$laps/data/valley-laps.gt.tum" -o "$laps/$run" -d -q --no-render > /dev/null 2>&1
   s=$laps/$run/summary.md
-  echo "$run: $(field 'Sensor time' "$s"); ATE $(field 'ATE (rmse)' "$s"); loops $(field 'Number of graph constraints' "$s"); $(cat "$laps/$run.time")"
+  echo "$run: $(field 'Sensor time' "$s"); ATE $(field 'ATE (rmse)' "$s"); constraints (loops) $(field 'Number of graph constraints' "$s"); $(cat "$laps/$run.time")"
   # The last row holds the end of the run (final full optimization and refinement).
   awk -F, 'NR > 1 { if (prev != "") { split(prev, p, ","); g += p[10]; if (p[15] == 1) { nf++; fg += p[10]; if (p[10] > mf) mf = p[10] } } prev = $0 }
     END { split(prev, p, ","); printf "  graph module during the run %.1f s, %d full optimizations (max %.0f ms, %.1f s in all); end of run %.0f ms\n", g / 1000, nf, mf, fg / 1000, p[10] }' \

@@ -76,7 +76,10 @@ TEST(FullOptimizationSchedule, OnlyALoopThatDisagreesWithTheGraphCorrectsIt)
                                          xy, theta));
   EXPECT_TRUE(swslam::loopCorrectsGraph(CPose2D(1, 2, M_PI - 0.01), CPose2D(1, 2, -M_PI + 0.01),
                                         xy, theta));
-  // Zero thresholds: every loop that is not exactly the graph's pose corrects it (the paper).
+  // Zero thresholds: every loop corrects the graph, even one that agrees exactly (the paper).
   EXPECT_TRUE(swslam::loopCorrectsGraph(graph, measured(1e-6, 0, 0), 0, 0));
-  EXPECT_FALSE(swslam::loopCorrectsGraph(graph, graph, 0, 0));
+  EXPECT_TRUE(swslam::loopCorrectsGraph(graph, graph, 0, 0));
+  // One zero threshold alone: any difference in that component counts.
+  EXPECT_TRUE(swslam::loopCorrectsGraph(graph, measured(0, 0, 1e-6), xy, 0));
+  EXPECT_FALSE(swslam::loopCorrectsGraph(graph, graph, xy, 0));
 }

@@ -8,6 +8,7 @@ namespace swslam
 bool loopCorrectsGraph(const mrpt::poses::CPose2D& graph_relative,
                        const mrpt::poses::CPose2D& measured, double xy, double theta)
 {
+  if (xy <= 0 && theta <= 0) return true;
   const mrpt::poses::CPose2D d = measured - graph_relative;  // graph_relative^-1 (+) measured
   return d.translation().norm() > xy || std::abs(d.phi()) > theta;
 }
@@ -18,9 +19,9 @@ FullOptimizationSchedule::FullOptimizationSchedule(size_t interval) : interval_(
     throw std::invalid_argument("full optimization schedule: the interval must be >= 1 node");
 }
 
-bool FullOptimizationSchedule::fullNow(size_t id, size_t accepted_loops)
+bool FullOptimizationSchedule::fullNow(size_t id, size_t correcting_loops)
 {
-  if (accepted_loops > 0) pending_ = true;
+  if (correcting_loops > 0) pending_ = true;
   if (!pending_ || (last_full_ && id < *last_full_ + interval_)) return false;
   ranFull(id);
   return true;

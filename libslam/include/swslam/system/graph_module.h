@@ -1,8 +1,9 @@
 #pragma once
 // The graph optimization module (paper Fig. 1, sec. III): adds each new node with its edges,
 // optimizes the sliding window, looks for loops (index gap + distance), verifies them by
-// PLICP and a chi-square gate, and on an accepted loop optimizes the whole graph (at most
-// once per [graph_optimizer] full_optimization_interval nodes while loops keep coming).
+// PLICP and a chi-square gate, and on an accepted loop that corrects the graph optimizes the
+// whole graph (at most once per [graph_optimizer] full_optimization_interval nodes while
+// loops keep coming).
 //
 // Threading: one thread (the graph thread, or the deterministic loop) calls addNode() and
 // optimizeAll() and refineAll(); graphCopy() and the counters may be called from any thread.
