@@ -17,6 +17,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 carmen_dir=${1:-../shared/datasets}
+bash scripts/install-deps.sh --with-tools > /dev/null ||
+  echo "bench-valley: could not install mrpt-apps; sections 6 and 7 will say what they miss"
 bash scripts/build.sh > build.log 2>&1 || { tail -50 build.log; exit 1; }
 out=out/bench-valley
 mkdir -p "$out"

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian bookworm packages swslam needs to build, test and run.
 # Skips apt entirely when every package is already installed.
-# Usage: scripts/install-deps.sh [--with-bench]   (--with-bench adds Ceres for swslam-bench-graph)
+# Usage: scripts/install-deps.sh [--with-bench] [--with-tools]
+#   --with-bench adds Ceres for swslam-bench-graph;
+#   --with-tools adds MRPT's programs (mrpt-apps: RawLogViewer, rawlog-edit, icp-slam,
+#   carmen2rawlog), which scripts/bench-valley.sh runs side by side with swslam.
 set -euo pipefail
 
 packages=(
@@ -13,9 +16,13 @@ packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
 )
-if [[ ${1:-} == --with-bench ]]; then
-  packages+=(libceres-dev)
-fi
+for arg in "$@"; do
+  case $arg in
+    --with-bench) packages+=(libceres-dev) ;;
+    --with-tools) packages+=(mrpt-apps) ;;
+    *) echo "install-deps: unknown option '$arg' (expected --with-bench or --with-tools)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
