@@ -1,6 +1,7 @@
 #include "swslam/system/full_optimization_schedule.h"
 
-#include <cmath>
+#include "swslam/pose_threshold.h"
+
 #include <stdexcept>
 
 namespace swslam
@@ -8,9 +9,7 @@ namespace swslam
 bool loopCorrectsGraph(const mrpt::poses::CPose2D& graph_relative,
                        const mrpt::poses::CPose2D& measured, double xy, double theta)
 {
-  if (xy <= 0 && theta <= 0) return true;
-  const mrpt::poses::CPose2D d = measured - graph_relative;  // graph_relative^-1 (+) measured
-  return d.translation().norm() > xy || std::abs(d.phi()) > theta;
+  return (xy <= 0 && theta <= 0) || movedBeyond(graph_relative, measured, MoveThreshold{xy, theta});
 }
 
 FullOptimizationSchedule::FullOptimizationSchedule(size_t interval) : interval_(interval)

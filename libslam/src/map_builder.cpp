@@ -1,7 +1,5 @@
 #include "swslam/map/map_builder.h"
 
-#include <mrpt/math/wrap2pi.h>
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,13 +8,6 @@
 
 namespace swslam
 {
-bool movedBeyond(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b,
-                 const MoveThreshold& threshold)
-{
-  return a.distanceTo(b) > threshold.translation ||
-         std::abs(mrpt::math::wrapToPi(b.phi() - a.phi())) > threshold.rotation;
-}
-
 MapBuilder::MapBuilder(const MapParams& params)
     : params_(params), grid_(params.resolution, params.initial_half_size, params.grow_margin)
 {

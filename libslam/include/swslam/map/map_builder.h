@@ -82,8 +82,4 @@ class MapBuilder
   SummedGrid grid_;                  ///< guarded by grid_mutex_
 };
 
-/** True if `b` is farther than `threshold` from `a` in translation or rotation. */
-bool movedBeyond(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b,
-                 const MoveThreshold& threshold);
-
 }  // namespace swslam

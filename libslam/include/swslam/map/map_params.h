@@ -1,6 +1,8 @@
 #pragma once
 // Parameters of the occupancy grid map (paper sec. IV), section [map].
 
+#include <swslam/pose_threshold.h>
+
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -9,13 +11,6 @@
 
 namespace swslam
 {
-/** How far a node must move before its scan is re-inserted (sec. IV.B). */
-struct MoveThreshold
-{
-  double translation = 0.1;  ///< [m]
-  double rotation = mrpt::DEG2RAD(0.5);  ///< [rad]
-};
-
 /** Parameters of MapBuilder and of the map writers, section [map]. */
 struct MapParams : public mrpt::config::CLoadableOptions
 {

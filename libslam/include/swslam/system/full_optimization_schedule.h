@@ -21,8 +21,8 @@ namespace swslam
 {
 /** True if a loop measurement `measured` (pose of its newer node in the older node's frame)
  * differs from the graph's current relative pose `graph_relative` by more than `xy` [m] in
- * translation or `theta` [rad] in rotation (the loop edge's residual at the current graph,
- * as se2Error() has it): the loop would move the graph, and only the whole graph's
+ * translation or `theta` [rad] in rotation (movedBeyond(); the loop edge's residual at the
+ * current graph, as se2Error() has it): the loop would move the graph, and only the whole graph's
  * optimization spreads such a correction along the loop. With xy = theta = 0, true for every
  * loop (the paper's rule). */
 bool loopCorrectsGraph(const mrpt::poses::CPose2D& graph_relative,
