@@ -25,6 +25,11 @@ int main(int argc, char** argv)
                                       "Force the maximum range [m] (default: from the log)",
                                       false, 0, "metres", cmd);
     TCLAP::SwitchArg laser_only("", "laser-only", "Drop ODOM lines", cmd);
+    TCLAP::SwitchArg reference_odometry(
+        "", "reference-odometry",
+        "Write each scan's reference pose as odometry before it (needs --laser-only): a perfect "
+        "motion prediction, for evaluation only",
+        cmd);
     TCLAP::SwitchArg repair("", "repair-timestamps",
                             "Make each stream's timestamps strictly increasing", cmd);
     TCLAP::SwitchArg overwrite("w", "overwrite", "Overwrite existing output files", cmd);
@@ -43,6 +48,7 @@ int main(int argc, char** argv)
     opts.params.max_range = max_range.getValue();
     opts.params.laser_only = laser_only.getValue();
     opts.params.repair_timestamps = repair.getValue();
+    opts.reference_odometry = reference_odometry.getValue();
     if (quiet.getValue()) opts.params.max_printed_warnings = 0;
 
     const auto stats = swslam::carmen2rawlog(opts);

@@ -2,6 +2,7 @@
 #include <swslam/carmen2rawlog.h>
 #include <swslam/rawlog_reader.h>
 #include <swslam/scan.h>
+#include <swslam/system/scan_source.h>
 #include <swslam/tum_io.h>
 
 #include <mrpt/obs/CObservationOdometry.h>
@@ -269,6 +270,66 @@ TEST(CarmenLog, RawlogRoundTripAndGroundTruth)
   EXPECT_NEAR(gt[0].pose.x(), 1, 1e-6);
   EXPECT_NEAR(gt[4].pose.x(), 3, 1e-6);
   EXPECT_NEAR(gt[4].pose.phi(), 0.5, 1e-6);
+}
+
+TEST(CarmenLog, ReferenceOdometryPrecedesEachScanWithAPose)
+{
+  const auto dir = swslam::test::tempDir("carmen_reference_odometry");
+  swslam::Carmen2RawlogOptions opts;
+  opts.input = writeLog(dir, excerpt());
+  opts.output = dir + "/out.rawlog";
+  opts.ground_truth = dir + "/gt.tum";
+  opts.reference_odometry = true;
+  EXPECT_THROW(swslam::carmen2rawlog(opts, [](const std::string&) {}), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(opts.output));
+
+  opts.params.laser_only = true;
+  opts.params.repair_timestamps = true;  // the third FLASER is stamped 0
+  swslam::carmen2rawlog(opts, [](const std::string&) {});
+  const auto gt = swslam::readTum(opts.ground_truth);
+  ASSERT_EQ(gt.size(), 5u);
+  // Each scan with a reference pose comes right after an odometry reading of that pose at
+  // its own time; the log's ODOM lines are gone, and RAWLASER (no pose) gets none.
+  swslam::RawlogReader reader(opts.output);
+  swslam::RawlogItem item;
+  std::shared_ptr<mrpt::obs::CObservationOdometry> pending;
+  size_t posed = 0, scans = 0;
+  while (reader.next(item))
+  {
+    if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(item.observation))
+    {
+      EXPECT_FALSE(pending) << "two odometry readings in a row";
+      EXPECT_EQ(odo->sensorLabel, "REFERENCE_ODOMETRY");
+      pending = odo;
+      continue;
+    }
+    ASSERT_TRUE(std::dynamic_pointer_cast<CObservation2DRangeScan>(item.observation));
+    scans++;
+    if (!pending) continue;
+    ASSERT_LT(posed, gt.size());
+    EXPECT_EQ(pending->timestamp, item.observation->timestamp);
+    EXPECT_NEAR((pending->odometry - gt[posed].pose).norm(), 0, 1e-9);
+    EXPECT_NEAR(pending->odometry.phi(), gt[posed].pose.phi(), 1e-9);
+    posed++;
+    pending.reset();
+  }
+  EXPECT_EQ(posed, gt.size());
+  EXPECT_EQ(scans, gt.size() + 1);  // and the RAWLASER scan
+
+  // Read as a run reads it: each FLASER scan's odometry increment is the reference motion.
+  swslam::ScanSourceOptions so;
+  so.sensor_label = "FLASER";
+  const auto source = swslam::openScanSource(opts.output, so, swslam::CarmenParams());
+  swslam::ScanInput in;
+  std::vector<std::optional<mrpt::poses::CPose2D>> increments;
+  while (source->next(in)) increments.push_back(in.odometry_increment);
+  ASSERT_EQ(increments.size(), 3u);  // FLASER at x = 1, 1.5, 2 (see excerpt())
+  for (size_t k = 1; k < 3; k++)
+  {
+    ASSERT_TRUE(increments[k]);
+    const auto want = gt[k].pose - gt[k - 1].pose;
+    EXPECT_NEAR((*increments[k] - want).norm(), 0, 1e-9) << k;
+  }
 }
 
 TEST(CarmenLog, NonNumericUsedParamIsMalformed)

@@ -4,6 +4,8 @@
 #include "swslam/tum_io.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
@@ -16,6 +18,10 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
   if (opts.compress_level < 0 || opts.compress_level > 9)
     throw std::invalid_argument("carmen2rawlog: compress level must be in 0..9, got " +
                                 std::to_string(opts.compress_level));
+  if (opts.reference_odometry && !opts.params.laser_only)
+    throw std::invalid_argument(
+        "carmen2rawlog: reference odometry needs laser-only conversion (the log's ODOM lines "
+        "would mix with it)");
   CarmenLogReader reader(opts.input, opts.params, std::move(warn));
   std::vector<StampedPose> reference;
   writeAtomically(opts.output, [&](const std::string& tmp) {
@@ -26,6 +32,15 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
     CarmenRecord rec;
     while (reader.next(rec))
     {
+      if (opts.reference_odometry && rec.reference_pose &&
+          std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(rec.observation))
+      {
+        mrpt::obs::CObservationOdometry odometry;
+        odometry.sensorLabel = "REFERENCE_ODOMETRY";
+        odometry.timestamp = rec.observation->timestamp;
+        odometry.odometry = *rec.reference_pose;
+        archive << odometry;
+      }
       archive << *rec.observation;
       if (rec.reference_pose) reference.push_back({rec.timestamp, *rec.reference_pose});
     }
