@@ -4,7 +4,6 @@
 #include "swslam/tum_io.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -32,8 +31,7 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
     CarmenRecord rec;
     while (reader.next(rec))
     {
-      if (opts.reference_odometry && rec.reference_pose &&
-          std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(rec.observation))
+      if (opts.reference_odometry && rec.reference_pose)  // only scans carry one
       {
         mrpt::obs::CObservationOdometry odometry;
         odometry.sensorLabel = "REFERENCE_ODOMETRY";
