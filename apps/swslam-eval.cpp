@@ -2,9 +2,11 @@
 //   swslam-eval ate EST.tum GT.tum        ATE after SE(2) alignment, RPE per pose and per metre
 //   swslam-eval relations EST.tum F.relations   Kuemmerle et al. relation-based metric
 //   swslam-eval consistency EST.tum LOG [--compare OTHER.tum]...   scans' agreement, no truth
+//   swslam-eval laser-optimum TRAJ.tum LOG   how far the scans' own constraints pull TRAJ
 
 #include "cli.h"
 #include <swslam/eval/consistency.h>
+#include <swslam/eval/laser_optimum.h>
 #include <swslam/eval/report.h>
 #include <swslam/system_config.h>
 
@@ -15,16 +17,17 @@ int main(int argc, char** argv)
   try
   {
     TCLAP::CmdLine cmd("swslam-eval: trajectory accuracy (ATE, RPE, Kuemmerle relations) and the "
-                       "scans' self-consistency at a trajectory's poses", ' ', "0.1");
-    std::vector<std::string> commands{"ate", "relations", "consistency"};
+                       "scans' self-consistency at a trajectory's poses, and how far the scans' own constraints "
+                       "pull it", ' ', "0.1");
+    std::vector<std::string> commands{"ate", "relations", "consistency", "laser-optimum"};
     TCLAP::ValuesConstraint<std::string> allowed(commands);
-    TCLAP::UnlabeledValueArg<std::string> command("command", "ate | relations | consistency", true, "",
+    TCLAP::UnlabeledValueArg<std::string> command("command", "ate | relations | consistency | laser-optimum", true, "",
                                                   &allowed, cmd);
     TCLAP::UnlabeledValueArg<std::string> est("estimate", "Estimated trajectory (TUM)", true,
                                               "", "EST.tum", cmd);
     TCLAP::UnlabeledValueArg<std::string> reference(
         "reference", "Ground truth (TUM) for 'ate', relations file for 'relations', the log "
-        "(rawlog or CARMEN) for 'consistency'", true, "", "GT.tum|FILE.relations|LOG", cmd);
+        "(rawlog or CARMEN) for 'consistency' and 'laser-optimum'", true, "", "GT.tum|FILE.relations|LOG", cmd);
     TCLAP::ValueArg<double> max_dt("", "max-dt", "Timestamp association tolerance (default 0.01)",
                                    false, 0.01, "seconds", cmd);
     TCLAP::ValueArg<double> segment("", "segment", "RPE segment length along the ground truth"
@@ -32,24 +35,51 @@ int main(int argc, char** argv)
     TCLAP::MultiArg<std::string> compare("", "compare", "consistency: also score this trajectory "
                                          "on the same pairs (repeatable)", false, "OTHER.tum", cmd);
     TCLAP::ValueArg<double> radius("", "radius", "consistency: pairs of scans this close on the "
-                                   "estimate (default 3)", false, 3.0, "metres", cmd);
+                                   "estimate (default 3); laser-optimum: pairs matched (default "
+                                   "[tracking] dense_radius)", false, 3.0, "metres", cmd);
     TCLAP::ValueArg<long> min_gap("", "min-gap", "consistency: pairs at least this many scored "
                                   "scans apart (default 1)", false, 1, "scans", cmd);
     TCLAP::ValueArg<long> revisit_gap("", "revisit-gap", "consistency: pairs this many scored scans "
                                       "apart are revisits (default 30)", false, 30, "scans", cmd);
-    TCLAP::ValueArg<std::string> config("c", "config", "consistency (required): the run's "
-                                        "configuration ([carmen], [tracking] min_range, [plicp] "
-                                        "min_segment_length)", false, "", "INI", cmd);
-    TCLAP::ValueArg<std::string> label("", "sensor-label", "consistency: the scans of this sensor "
+    TCLAP::ValueArg<std::string> config("c", "config", "consistency and laser-optimum (required): "
+                                        "the run's configuration (how the log is read, PLICP, "
+                                        "the graph optimizer)", false, "", "INI", cmd);
+    TCLAP::ValueArg<std::string> label("", "sensor-label", "consistency, laser-optimum: the scans of this sensor "
                                        "(default: the first seen)", false, "", "LABEL", cmd);
-    TCLAP::ValueArg<long> stride("", "stride", "consistency: every K-th scan (default 1)", false, 1,
+    TCLAP::ValueArg<std::string> output("o", "output", "laser-optimum: write the optimum here "
+                                        "(TUM, vehicle poses)", false, "", "OPT.tum", cmd);
+    TCLAP::ValueArg<long> stride("", "stride", "consistency, laser-optimum: every K-th scan (default 1)", false, 1,
                                  "K", cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     if (!(max_dt.getValue() >= 0)) throw std::runtime_error("--max-dt must be >= 0");
     if (!(segment.getValue() > 0)) throw std::runtime_error("--segment must be > 0");
 
     const auto estimate = swslam::eval::readNonEmptyTum(est.getValue());
-    if (command.getValue() == "consistency")
+    if (command.getValue() == "laser-optimum")
+    {
+      if (config.getValue().empty())
+        throw std::runtime_error("laser-optimum needs --config: the run's configuration says how "
+                                 "the log is read and matched");
+      const auto params = swslam::loadSystemParams(config.getValue());
+      swslam::eval::LaserOptimumOptions options;
+      if (stride.getValue() < 1) throw std::runtime_error("--stride must be >= 1");
+      options.radius = radius.isSet() ? radius.getValue() : params.tracking.dense_radius;
+      if (!(options.radius > 0)) throw std::runtime_error("--radius must be > 0");
+      options.dense_max_index_gap = static_cast<size_t>(params.tracking.dense_max_index_gap);
+      options.gate_xy = params.tracking.dense_gate_xy;
+      options.gate_theta = params.tracking.dense_gate_theta;
+      options.min_inlier_fraction = params.loop_closure.min_inlier_fraction;
+      options.failed_sigma_xy = params.tracking.lost_prior_sigma_xy;
+      options.failed_sigma_theta = params.tracking.lost_prior_sigma_theta;
+      std::cout << swslam::eval::laserOptimumReport(reference.getValue(), estimate, params.plicp,
+                                                    params.graph_optimizer, options,
+                                                    max_dt.getValue(),
+                                                    static_cast<size_t>(stride.getValue()),
+                                                    params.tracking.min_range,
+                                                    params.carmen, label.getValue(),
+                                                    output.getValue());
+    }
+    else if (command.getValue() == "consistency")
     {
       if (!(radius.getValue() > 0)) throw std::runtime_error("--radius must be > 0");
       if (min_gap.getValue() < 0 || revisit_gap.getValue() < 0 || stride.getValue() < 1)

@@ -1,4 +1,5 @@
 // The scans' self-consistency at a trajectory's poses (swslam-eval consistency).
+#include "room_loop.h"
 #include "test_support.h"
 
 #include <swslam/eval/consistency.h>
@@ -12,28 +13,7 @@
 
 using namespace swslam;
 using mrpt::poses::CPose2D;
-
-namespace
-{
-/** 16 scans of the room along a closed loop (a revisit of the start at the end). */
-struct RoomLoop
-{
-  std::vector<Scan> scans;
-  std::vector<CPose2D> poses;
-  RoomLoop()
-  {
-    const auto world = test::roomWorld();
-    std::mt19937 rng(3);
-    for (int k = 0; k < 16; k++)
-    {
-      const double a = 2 * M_PI * k / 16;
-      poses.emplace_back(3 * std::cos(a) - 1, 2 * std::sin(a), a + M_PI / 2);
-      scans.push_back(scanFromObservation(
-          test::simulateObservation(world, poses.back(), 361, M_PI, 30, 0.005, rng)));
-    }
-  }
-};
-}  // namespace
+using test::RoomLoop;
 
 TEST(EvalConsistency, NearbyPairsKeepCloseAndDistantEnoughScans)
 {

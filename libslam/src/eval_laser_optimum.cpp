@@ -1,0 +1,118 @@
+#include "swslam/eval/laser_optimum.h"
+
+#include "swslam/edge_kind.h"
+#include "swslam/eval/ate.h"
+#include "swslam/eval/consistency.h"
+#include "swslam/tracking/local_tracker.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace swslam::eval
+{
+using mrpt::poses::CPose2D;
+
+namespace
+{
+Pose2 asVector(const CPose2D& p) { return Pose2(p.x(), p.y(), p.phi()); }
+}  // namespace
+
+LaserOptimumResult laserOptimum(const std::vector<Scan>& scans, const std::vector<CPose2D>& sensor_poses,
+                                const PlicpParams& plicp, const GraphOptimizerParams& graph,
+                                const LaserOptimumOptions& options)
+{
+  if (scans.size() != sensor_poses.size() || scans.size() < 2)
+    throw std::invalid_argument("laser optimum: one pose per scan, at least two scans (got " +
+                                std::to_string(scans.size()) + " scans, " +
+                                std::to_string(sensor_poses.size()) + " poses)");
+  LaserOptimumResult result;
+  GraphProblem problem;
+  for (const auto& p : sensor_poses) problem.poses.push_back(asVector(p));
+  problem.fixed.assign(scans.size(), 0);
+  problem.fixed[0] = 1;
+  const auto pairs = nearbyPairs(sensor_poses, options.radius, 1);
+  std::vector<char> consecutive_linked(scans.size(), 0);
+  const auto match = [&](size_t i, size_t j, const ReferenceScan& ref) {
+    result.pairs++;
+    const CPose2D guess = sensor_poses[j] - sensor_poses[i];
+    const MatchResult m = matchScans(ref, scans[j], guess, plicp);
+    const CPose2D correction = m.pose - guess;
+    if (!m.ok() || m.cur_valid_rays == 0 ||
+        static_cast<double>(m.correspondences) < options.min_inlier_fraction * m.cur_valid_rays ||
+        correction.norm() > options.gate_xy ||
+        std::abs(mrpt::math::wrapToPi(correction.phi())) > options.gate_theta)
+      return;
+    const EdgeKind kind = j == i + 1                              ? EdgeKind::Consecutive
+                          : j - i <= options.dense_max_index_gap ? EdgeKind::DenseNeighbour
+                                                                  : EdgeKind::Loop;
+    problem.edges.push_back({static_cast<int>(i), static_cast<int>(j), asVector(m.pose),
+                             informationFromCovariance(m.covariance), graph.isRobust(kind)});
+    if (kind == EdgeKind::Consecutive) consecutive_linked[j] = 1;
+  };
+  // Pairs come sorted by i: one reference index per older scan.
+  for (size_t k = 0, i = 0; i + 1 < scans.size(); ++i)
+  {
+    const ReferenceScan ref(scans[i], plicp);
+    bool consecutive_seen = false;
+    for (; k < pairs.size() && pairs[k].first == i; ++k)
+    {
+      consecutive_seen |= pairs[k].second == i + 1;
+      match(i, pairs[k].second, ref);
+    }
+    if (!consecutive_seen) match(i, i + 1, ref);
+  }
+  result.edges = problem.edges.size();
+  const Eigen::Vector3d weak(1 / (options.failed_sigma_xy * options.failed_sigma_xy),
+                             1 / (options.failed_sigma_xy * options.failed_sigma_xy),
+                             1 / (options.failed_sigma_theta * options.failed_sigma_theta));
+  for (size_t j = 1; j < scans.size(); ++j)
+    if (!consecutive_linked[j])
+    {
+      result.failed_consecutive++;
+      problem.edges.push_back({static_cast<int>(j - 1), static_cast<int>(j),
+                               asVector(sensor_poses[j] - sensor_poses[j - 1]), weak.asDiagonal(),
+                               false});
+    }
+  result.report = optimizeGraphProblem(problem, graph);
+  for (const auto& p : problem.poses) result.optimum.emplace_back(p.x(), p.y(), p.z());
+  return result;
+}
+
+std::string laserOptimumReport(const std::string& log_path, const std::vector<StampedPose>& trajectory,
+                               const PlicpParams& plicp, const GraphOptimizerParams& graph,
+                               const LaserOptimumOptions& options, double max_dt, size_t stride,
+                               double min_range, const CarmenParams& carmen,
+                               const std::string& sensor_label, const std::string& output)
+{
+  const auto posed = loadPosedScans(log_path, {trajectory}, max_dt, stride, min_range, carmen, sensor_label);
+  const auto& given = posed.sensor_poses[0];
+  const auto r = laserOptimum(posed.scans, given, plicp, graph, options);
+  std::vector<PosePair> moved;
+  for (size_t k = 0; k < given.size(); ++k) moved.push_back({0, 0, r.optimum[k], given[k]});
+  const auto ate = absoluteTrajectoryError(moved);
+  if (!output.empty())
+  {
+    std::vector<StampedPose> vehicle;
+    for (size_t k = 0; k < given.size(); ++k)
+      vehicle.push_back({mrpt::Clock::toDouble(posed.scans[k].timestamp),
+                         r.optimum[k] + (CPose2D() - posed.scans[k].sensor_pose)});  // (+) mount^-1
+    writeTum(output, vehicle);
+  }
+  char buf[512];
+  std::snprintf(buf, sizeof(buf),
+                "scans=%zu\nlog_scans=%zu\nunposed_scans=%zu\npairs=%zu\nedges=%zu\n"
+                "failed_consecutive=%zu\nstatus=%s\niterations=%zu\nmoved_rmse_m=%.6g\n"
+                "moved_median_m=%.6g\nmoved_max_m=%.6g\n"
+                "# the scans' own optimum lies %.4f m (rmse) from the trajectory: %zu edges of %zu "
+                "pairs, %zu consecutive without a match, optimizer %s\n",
+                posed.scans.size(), posed.log_scans, posed.unposed, r.pairs, r.edges,
+                r.failed_consecutive, statusName(r.report.status), r.report.iterations,
+                ate.position.rmse, ate.position.median, ate.position.max, ate.position.rmse,
+                r.edges, r.pairs, r.failed_consecutive, statusName(r.report.status));
+  return buf;
+}
+
+}  // namespace swslam::eval
