@@ -5,8 +5,9 @@
 #  2. valley threaded: each module's max time, apart from full optimizations after loops;
 #  3. valley over 10 noise seeds: ATE mean and std;
 #  4. the corrected CARMEN logs laser-only (ATE; the ATE of a run given the reference motion as
-#     odometry; and the scans' agreement at swslam's poses and at the reference poses,
-#     swslam-eval consistency), and the open-water scenario;
+#     odometry; how far the scans' own constraints pull the reference, swslam-eval
+#     laser-optimum; and the scans' agreement at swslam's poses, at the reference poses and at
+#     those two, swslam-eval consistency), and the open-water scenario;
 #  5. MRPT's Telecom Faculty one-loop rawlog: the map before and after its loop closes;
 #  6. MRPT's icp-slam on the valley rawlog: time and ATE;
 #  7. MRPT's driving_in_office_obs.rawlog from CARMEN_DIR (no ground truth), laser only and
@@ -78,9 +79,15 @@ for log in "$carmen_dir"/*-corrected.log.gz; do
   "$bin/swslam" -c $cfg -i "$out/$name-reference-odometry.rawlog" -g "$out/$name.gt.tum" \
     -o "$out/$name-reference-odometry" -d -q --no-render > /dev/null 2>&1 || true
   echo "  with the reference motion as odometry: ATE $(field 'ATE (rmse)' "$out/$name-reference-odometry/summary.md")"
-  # How well the scans agree at swslam's poses and at the reference poses (doc/evaluation.md).
+  # Where the scans' own constraints, matched from the reference, pull the reference (no
+  # tracking decisions: doc/evaluation.md).
+  "$bin/swslam-eval" laser-optimum "$out/$name.gt.tum" "$log" -c $cfg -o "$out/$name-laser-optimum.tum" \
+    2> /dev/null | grep '^#' | sed 's|^# |  laser optimum from the reference: |' || true
+  # How well the scans agree at the reference poses, at swslam's, and at the two experiments'
+  # (doc/evaluation.md).
   "$bin/swslam-eval" consistency "$out/$name.gt.tum" "$log" -c $cfg \
-    --compare "$out/$name/trajectory.tum" --compare "$out/$name-reference-odometry/trajectory.tum" 2> /dev/null | grep '^#' | sed "s|$out/||; s|^# |  consistency |" || true
+    --compare "$out/$name/trajectory.tum" --compare "$out/$name-reference-odometry/trajectory.tum" \
+    --compare "$out/$name-laser-optimum.tum" 2> /dev/null | grep '^#' | sed "s|$out/||; s|^# |  consistency |" || true
 done
 "$bin/swslam" -c $cfg -i datasets/open-water/open-water.rawlog -g datasets/open-water/open-water.gt.tum \
   -o "$out/open-water" -d -q --no-render > /dev/null 2>&1
