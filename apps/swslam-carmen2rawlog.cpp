@@ -27,8 +27,8 @@ int main(int argc, char** argv)
     TCLAP::SwitchArg laser_only("", "laser-only", "Drop ODOM lines", cmd);
     TCLAP::SwitchArg reference_odometry(
         "", "reference-odometry",
-        "Write each scan's reference pose as odometry before it (needs --laser-only): a perfect "
-        "motion prediction, for evaluation only",
+        "Write each scan's reference pose as odometry before it (needs --laser-only "
+        "--repair-timestamps): a perfect motion prediction, for evaluation only",
         cmd);
     TCLAP::SwitchArg repair("", "repair-timestamps",
                             "Make each stream's timestamps strictly increasing", cmd);

@@ -10,6 +10,7 @@
 #include <swslam/eval/report.h>
 #include <swslam/system_config.h>
 
+#include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv)
@@ -64,7 +65,17 @@ int main(int argc, char** argv)
       swslam::eval::LaserOptimumOptions options;
       if (stride.getValue() < 1) throw std::runtime_error("--stride must be >= 1");
       options.radius = radius.isSet() ? radius.getValue() : params.tracking.dense_radius;
-      if (!(options.radius > 0)) throw std::runtime_error("--radius must be > 0");
+      if (!(options.radius > 0))
+        throw std::runtime_error(radius.isSet() ? "--radius must be > 0"
+                                                : "[tracking] dense_radius is 0: pass --radius");
+      // Fail before the matching (minutes on a long log) rather than after it.
+      if (!output.getValue().empty())
+      {
+        const auto out_dir = std::filesystem::absolute(output.getValue()).parent_path();
+        if (!std::filesystem::is_directory(out_dir))
+          throw std::runtime_error("cannot write '" + output.getValue() + "': no directory '" +
+                                   out_dir.string() + "'");
+      }
       options.dense_max_index_gap = static_cast<size_t>(params.tracking.dense_max_index_gap);
       options.gate_xy = params.tracking.dense_gate_xy;
       options.gate_theta = params.tracking.dense_gate_theta;

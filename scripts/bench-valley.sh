@@ -66,6 +66,7 @@ echo "== 4. corrected CARMEN logs (laser only) and open water"
 for log in "$carmen_dir"/*-corrected.log.gz; do
   [[ -f $log ]] || continue
   name=$(basename "$log" -corrected.log.gz)
+  rm -rf "$out/$name" "$out/$name-reference-odometry" "$out/$name-laser-optimum.tum"  # no stale results
   "$bin/swslam-carmen2rawlog" -q -w --laser-only --repair-timestamps -i "$log" -o "$out/$name.rawlog" \
     --ground-truth "$out/$name.gt.tum" > /dev/null 2>&1
   "$bin/swslam" -c $cfg -i "$log" -g "$out/$name.gt.tum" -o "$out/$name" -d -q --no-odometry \
@@ -85,9 +86,13 @@ for log in "$carmen_dir"/*-corrected.log.gz; do
     2> /dev/null | grep '^#' | sed 's|^# |  laser optimum from the reference: |' || true
   # How well the scans agree at the reference poses, at swslam's, and at the two experiments'
   # (doc/evaluation.md).
-  "$bin/swslam-eval" consistency "$out/$name.gt.tum" "$log" -c $cfg \
-    --compare "$out/$name/trajectory.tum" --compare "$out/$name-reference-odometry/trajectory.tum" \
-    --compare "$out/$name-laser-optimum.tum" 2> /dev/null | grep '^#' | sed "s|$out/||; s|^# |  consistency |" || true
+  # Only the trajectories this run wrote (a step that failed is left out, not replaced).
+  compare=()
+  for t in "$out/$name/trajectory.tum" "$out/$name-reference-odometry/trajectory.tum" "$out/$name-laser-optimum.tum"; do
+    [[ -f $t ]] && compare+=(--compare "$t")
+  done
+  "$bin/swslam-eval" consistency "$out/$name.gt.tum" "$log" -c $cfg "${compare[@]}" \
+    2> /dev/null | grep '^#' | sed "s|$out/||; s|^# |  consistency |" || true
 done
 "$bin/swslam" -c $cfg -i datasets/open-water/open-water.rawlog -g datasets/open-water/open-water.gt.tum \
   -o "$out/open-water" -d -q --no-render > /dev/null 2>&1

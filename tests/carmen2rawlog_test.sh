@@ -51,17 +51,21 @@ fi
 grep -q "odometry: 0 (12 ODOM lines dropped" "$DIR/s2.txt" || fail "laser-only"
 grep -q "repaired 1 (period 0.2 s)" "$DIR/s2.txt" || fail "timestamp repair"
 
-# --reference-odometry: one odometry reading per scan (the reference pose), only laser-only.
+# --reference-odometry: one odometry reading per scan (the reference pose), only laser-only
+# with repaired timestamps.
 "$BIN" -w -q -i "$DIR/tiny.log.gz" -o "$DIR/ref.rawlog" --laser-only --repair-timestamps --reference-odometry \
   > /dev/null || fail "reference-odometry conversion failed"
 if command -v rawlog-edit > /dev/null; then
   rawlog-edit --info -i "$DIR/ref.rawlog" > "$DIR/ref-info.txt" 2>&1 || fail "rawlog-edit cannot read"
   grep -Eq "REFERENCE_ODOMETRY / +12 " "$DIR/ref-info.txt" || fail "reference odometry count: $(cat "$DIR/ref-info.txt")"
 fi
-if "$BIN" -w -q -i "$DIR/tiny.log.gz" -o "$DIR/ref2.rawlog" --reference-odometry 2> "$DIR/err.txt"; then
-  fail "reference odometry accepted without --laser-only"
-fi
-grep -q "needs laser-only" "$DIR/err.txt" || fail "error message: $(cat "$DIR/err.txt")"
+for flags in "" "--laser-only" "--repair-timestamps"; do
+  # shellcheck disable=SC2086
+  if "$BIN" -w -q -i "$DIR/tiny.log.gz" -o "$DIR/ref2.rawlog" --reference-odometry $flags 2> "$DIR/err.txt"; then
+    fail "reference odometry accepted with only '$flags'"
+  fi
+  grep -q "needs laser-only conversion with repaired timestamps" "$DIR/err.txt" || fail "error message: $(cat "$DIR/err.txt")"
+done
 
 # Bad input: a clear error and exit code 1, no output.
 if "$BIN" -i "$DIR/missing.log" -o "$DIR/none.rawlog" 2> "$DIR/err.txt"; then fail "missing input accepted"; fi

@@ -110,5 +110,6 @@ expect_error "have a pose within" consistency "$DIR/gt.tum" "$LOG" -c "$SRC/conf
 expect_error "cannot" consistency "$DIR/gt.tum" "$DIR/missing.rawlog" -c "$SRC/config/default.ini"
 expect_error "needs --config" laser-optimum "$DIR/gt.tum" "$LOG"
 expect_error "have a pose within" laser-optimum "$DIR/gt.tum" "$LOG" -c "$SRC/config/default.ini"
+expect_error "no directory" laser-optimum "$SRC/datasets/lake-short/lake-short.gt.tum" "$LOG" -c "$SRC/config/default.ini" -o "$DIR/missing/optimum.tum"
 expect_error "stride" laser-optimum "$SRC/datasets/lake-short/lake-short.gt.tum" "$LOG" -c "$SRC/config/default.ini" --stride 0
 echo "eval_app_test: OK"

@@ -17,10 +17,12 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
   if (opts.compress_level < 0 || opts.compress_level > 9)
     throw std::invalid_argument("carmen2rawlog: compress level must be in 0..9, got " +
                                 std::to_string(opts.compress_level));
-  if (opts.reference_odometry && !opts.params.laser_only)
+  // The log's ODOM lines would mix with the reference odometry, and a reading stamped before
+  // the previous one is dropped by a reader (the motion then comes out wrong).
+  if (opts.reference_odometry && (!opts.params.laser_only || !opts.params.repair_timestamps))
     throw std::invalid_argument(
-        "carmen2rawlog: reference odometry needs laser-only conversion (the log's ODOM lines "
-        "would mix with it)");
+        "carmen2rawlog: reference odometry needs laser-only conversion with repaired timestamps "
+        "(--laser-only --repair-timestamps)");
   CarmenLogReader reader(opts.input, opts.params, std::move(warn));
   std::vector<StampedPose> reference;
   writeAtomically(opts.output, [&](const std::string& tmp) {

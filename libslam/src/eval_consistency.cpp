@@ -132,7 +132,7 @@ PosedScans loadPosedScans(const std::string& log_path,
                           double max_dt, size_t stride, double min_range,
                           const CarmenParams& carmen, const std::string& sensor_label)
 {
-  if (stride == 0) throw std::runtime_error("consistency: the stride must be at least 1");
+  if (stride == 0) throw std::runtime_error("scans at a trajectory's poses: the stride must be at least 1");
   std::vector<std::vector<StampedPose>> sorted;
   for (const auto& t : trajectories) sorted.push_back(sortedByTime(t));
   PosedScans out;
@@ -167,7 +167,7 @@ PosedScans loadPosedScans(const std::string& log_path,
   {
     char dt[32];
     std::snprintf(dt, sizeof(dt), "%g", max_dt);
-    throw std::runtime_error("consistency: " + std::to_string(associated) + " of the " +
+    throw std::runtime_error("scans at a trajectory's poses: " + std::to_string(associated) + " of the " +
                              std::to_string(out.log_scans) + " scans of '" + log_path +
                              "' have a pose within " + dt + " s in every trajectory, " +
                              std::to_string(out.scans.size()) + " kept with stride " +

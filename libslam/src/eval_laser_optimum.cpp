@@ -3,6 +3,7 @@
 #include "swslam/edge_kind.h"
 #include "swslam/eval/ate.h"
 #include "swslam/eval/consistency.h"
+#include "swslam/loop/loop_closer.h"
 #include "swslam/tracking/local_tracker.h"
 
 #include <mrpt/math/wrap2pi.h>
@@ -40,8 +41,7 @@ LaserOptimumResult laserOptimum(const std::vector<Scan>& scans, const std::vecto
     const CPose2D guess = sensor_poses[j] - sensor_poses[i];
     const MatchResult m = matchScans(ref, scans[j], guess, plicp);
     const CPose2D correction = m.pose - guess;
-    if (!m.ok() || m.cur_valid_rays == 0 ||
-        static_cast<double>(m.correspondences) < options.min_inlier_fraction * m.cur_valid_rays ||
+    if (!m.ok() || matchInlierFraction(m) < options.min_inlier_fraction ||
         correction.norm() > options.gate_xy ||
         std::abs(mrpt::math::wrapToPi(correction.phi())) > options.gate_theta)
       return;
@@ -74,7 +74,7 @@ LaserOptimumResult laserOptimum(const std::vector<Scan>& scans, const std::vecto
       result.failed_consecutive++;
       problem.edges.push_back({static_cast<int>(j - 1), static_cast<int>(j),
                                asVector(sensor_poses[j] - sensor_poses[j - 1]), weak.asDiagonal(),
-                               false});
+                               graph.isRobust(EdgeKind::OdometryPrior)});
     }
   result.report = optimizeGraphProblem(problem, graph);
   for (const auto& p : problem.poses) result.optimum.emplace_back(p.x(), p.y(), p.z());
@@ -92,7 +92,13 @@ std::string laserOptimumReport(const std::string& log_path, const std::vector<St
   const auto r = laserOptimum(posed.scans, given, plicp, graph, options);
   std::vector<PosePair> moved;
   for (size_t k = 0; k < given.size(); ++k) moved.push_back({0, 0, r.optimum[k], given[k]});
-  const auto ate = absoluteTrajectoryError(moved);
+  // Poses left as given by an optimizer that failed are no optimum.
+  if (r.report.status != OptimizationStatus::Converged &&
+      r.report.status != OptimizationStatus::MaxIterations)
+    throw std::runtime_error(std::string("laser optimum: the optimizer stopped with status ") +
+                             statusName(r.report.status) + " (" + r.report.message +
+                             "): no optimum");
+  const auto distance = absoluteTrajectoryError(moved).position;
   if (!output.empty())
   {
     std::vector<StampedPose> vehicle;
@@ -110,7 +116,7 @@ std::string laserOptimumReport(const std::string& log_path, const std::vector<St
                 "pairs, %zu consecutive without a match, optimizer %s\n",
                 posed.scans.size(), posed.log_scans, posed.unposed, r.pairs, r.edges,
                 r.failed_consecutive, statusName(r.report.status), r.report.iterations,
-                ate.position.rmse, ate.position.median, ate.position.max, ate.position.rmse,
+                distance.rmse, distance.median, distance.max, distance.rmse,
                 r.edges, r.pairs, r.failed_consecutive, statusName(r.report.status));
   return buf;
 }

@@ -83,13 +83,13 @@ double loopMahalanobis2(const CPose2D& predicted, const CPose2D& measured,
   return e.dot(llt.solve(e));
 }
 
-namespace
-{
-double inlierFraction(const MatchResult& m)
+double matchInlierFraction(const MatchResult& m)
 {
   return m.cur_valid_rays == 0 ? 0.0 : static_cast<double>(m.correspondences) / m.cur_valid_rays;
 }
 
+namespace
+{
 /** PLICP from the best pose of a correlative search on the old scan alone, around `guess`
  * (sensor frame) within 3 drift standard deviations; `first` when the search finds nothing or
  * is ambiguous (a pose farther than ambiguity_radius from the best scores within
@@ -140,14 +140,14 @@ LoopCheck verifyLoop(const PoseGraph& graph, const LoopNode& old, const LoopNode
   c.match = matchScans(*old.scan, newest.scan->scan, guess, plicp);
   const Eigen::Matrix3d drift = driftCovariance(c.path_gap, p);
   if (search && search->enabled && old.scan->scan.sensor_pose == newest.scan->scan.sensor_pose &&
-      (c.match.status != MatchStatus::Converged || inlierFraction(c.match) < p.min_inlier_fraction))
+      (c.match.status != MatchStatus::Converged || matchInlierFraction(c.match) < p.min_inlier_fraction))
   {
     const MatchResult m = searchedLoopMatch(*old.scan, newest.scan->scan, guess, c.match, drift, *search, p, plicp);
     c.searched = m.status != c.match.status || !(m.pose == c.match.pose);
     c.match = m;
   }
   if (c.match.status != MatchStatus::Converged) return c;  // verdict MatchFailed
-  c.inlier_fraction = inlierFraction(c.match);
+  c.inlier_fraction = matchInlierFraction(c.match);
   const CPose2D measured = vehicleMotion(mount, c.match.pose);
   const Eigen::Matrix3d cov = vehicleMotionCovariance(mount, c.match.pose, c.match.covariance);
   c.mahalanobis2 = loopMahalanobis2(c.predicted, measured, cov, drift);

@@ -17,7 +17,8 @@ struct Carmen2RawlogOptions
   /** Before each scan with a reference pose, a CObservationOdometry holding that pose, at the
    * scan's timestamp (label "REFERENCE_ODOMETRY"): a perfect motion prediction, to measure how
    * far the laser alone takes a run from the reference (doc/evaluation.md). It is the reference,
-   * never an input to judge a run by. Needs params.laser_only (the ODOM lines would mix in). */
+   * never an input to judge a run by. Needs params.laser_only (the ODOM lines would mix in) and
+   * params.repair_timestamps (a reader drops a reading older than the one before). */
   bool reference_odometry = false;
   CarmenParams params;
 };
@@ -25,7 +26,7 @@ struct Carmen2RawlogOptions
 /** Converts, writing both outputs atomically. Throws std::runtime_error naming the
  * problem if the input cannot be read or holds no laser scan (nothing is written then), and
  * std::invalid_argument for a compress level outside 0-9 or reference_odometry without
- * params.laser_only. */
+ * params.laser_only and params.repair_timestamps. */
 CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts,
                           CarmenLogReader::WarningSink warn = {});
 

@@ -60,7 +60,8 @@ LaserOptimumResult laserOptimum(const std::vector<Scan>& scans,
  * ATE of the optimum against the trajectory (SE(2)-aligned sensor positions: how far the
  * scans pull it). With `output` non-empty, also writes the optimum there as a TUM trajectory
  * of vehicle poses (each sensor pose composed with the inverse of its scan's mounting) at the
- * scans' timestamps. */
+ * scans' timestamps. Throws std::runtime_error naming the problem when the log cannot be read,
+ * fewer than two scans have a pose, or the optimizer fails (no optimum, nothing written). */
 std::string laserOptimumReport(const std::string& log_path, const std::vector<StampedPose>& trajectory,
                                const PlicpParams& plicp, const GraphOptimizerParams& graph,
                                const LaserOptimumOptions& options, double max_dt, size_t stride,

@@ -66,6 +66,10 @@ std::vector<size_t> loopCandidates(const PoseGraph& graph, size_t newest, const 
  * diag(sxy^2, sxy^2, sth^2), sxy = max(drift_xy_per_m * gap, min_drift_sigma_xy), sth alike. */
 Eigen::Matrix3d driftCovariance(double path_gap, const LoopClosureParams& p);
 
+/** A loop check's overlap: the match's correspondences over the new scan's valid rays (0 when
+ * it has none), compared with min_inlier_fraction. */
+double matchInlierFraction(const MatchResult& m);
+
 /** Squared Mahalanobis distance of e = predicted^-1 (+) measured (in the frame of
  * `predicted`, angle wrapped): e' S^-1 e, S = J measured_cov J' + drift_cov, where
  * J = diag(R(predicted.phi)', 1) carries the measurement's covariance (in the frame
