@@ -62,9 +62,9 @@ int main(int argc, char** argv)
         throw std::runtime_error("laser-optimum needs --config: the run's configuration says how "
                                  "the log is read and matched");
       const auto params = swslam::loadSystemParams(config.getValue());
-      swslam::eval::LaserOptimumOptions options;
+      auto options = swslam::eval::laserOptimumOptions(params.tracking, params.loop_closure);
       if (stride.getValue() < 1) throw std::runtime_error("--stride must be >= 1");
-      options.radius = radius.isSet() ? radius.getValue() : params.tracking.dense_radius;
+      if (radius.isSet()) options.radius = radius.getValue();
       if (!(options.radius > 0))
         throw std::runtime_error(radius.isSet() ? "--radius must be > 0"
                                                 : "[tracking] dense_radius is 0: pass --radius");
@@ -76,12 +76,6 @@ int main(int argc, char** argv)
           throw std::runtime_error("cannot write '" + output.getValue() + "': no directory '" +
                                    out_dir.string() + "'");
       }
-      options.dense_max_index_gap = static_cast<size_t>(params.tracking.dense_max_index_gap);
-      options.gate_xy = params.tracking.dense_gate_xy;
-      options.gate_theta = params.tracking.dense_gate_theta;
-      options.min_inlier_fraction = params.loop_closure.min_inlier_fraction;
-      options.failed_sigma_xy = params.tracking.lost_prior_sigma_xy;
-      options.failed_sigma_theta = params.tracking.lost_prior_sigma_theta;
       std::cout << swslam::eval::laserOptimumReport(reference.getValue(), estimate, params.plicp,
                                                     params.graph_optimizer, options,
                                                     max_dt.getValue(),

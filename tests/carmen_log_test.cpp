@@ -108,6 +108,18 @@ void expectTimes(const std::vector<std::shared_ptr<CObservation2DRangeScan>>& sc
   for (size_t i = 0; i < scans.size(); i++)
     EXPECT_NEAR(toSec(scans[i]->timestamp), expected[i], 1e-6) << "scan " << i;
 }
+
+/** Conversion of excerpt() (written into a fresh directory) to out.rawlog and gt.tum there. */
+swslam::Carmen2RawlogOptions excerptConversion(const std::string& dir_name)
+{
+  const auto dir = swslam::test::tempDir(dir_name);
+  swslam::Carmen2RawlogOptions opts;
+  opts.input = writeLog(dir, excerpt());
+  opts.output = dir + "/out.rawlog";
+  opts.ground_truth = dir + "/gt.tum";
+  return opts;
+}
+
 }  // namespace
 
 TEST(CarmenLog, ConvertsTheExcerpt)
@@ -230,11 +242,7 @@ TEST(CarmenLog, NegativeTimestampsAreShifted)
 
 TEST(CarmenLog, RawlogRoundTripAndGroundTruth)
 {
-  const auto dir = swslam::test::tempDir("carmen_rawlog");
-  swslam::Carmen2RawlogOptions opts;
-  opts.input = writeLog(dir, excerpt());
-  opts.output = dir + "/out.rawlog";
-  opts.ground_truth = dir + "/gt.tum";
+  auto opts = excerptConversion("carmen_rawlog");
   const auto c = convert(opts.input, opts.params);
   const auto stats = swslam::carmen2rawlog(opts, [](const std::string&) {});
   EXPECT_EQ(stats.scans(), 6u);
@@ -275,11 +283,7 @@ TEST(CarmenLog, RawlogRoundTripAndGroundTruth)
 
 TEST(CarmenLog, ReferenceOdometryPrecedesEachScanWithAPose)
 {
-  const auto dir = swslam::test::tempDir("carmen_reference_odometry");
-  swslam::Carmen2RawlogOptions opts;
-  opts.input = writeLog(dir, excerpt());
-  opts.output = dir + "/out.rawlog";
-  opts.ground_truth = dir + "/gt.tum";
+  auto opts = excerptConversion("carmen_reference_odometry");
   opts.reference_odometry = true;
   // Needs laser-only (no ODOM lines mixed in) and repaired timestamps (the third FLASER is
   // stamped 0: its reading would be dropped as out of order and the motion come out wrong).

@@ -83,3 +83,24 @@ TEST(LaserOptimum, MismatchedInputIsAnError)
                                   GraphOptimizerParams(), eval::LaserOptimumOptions()),
                std::invalid_argument);
 }
+
+TEST(LaserOptimum, OptionsComeFromTheRunsTrackingAndLoopSections)
+{
+  TrackingParams t;
+  t.dense_radius = 2.5;
+  t.dense_max_index_gap = 12;
+  t.dense_gate_xy = 0.2;
+  t.dense_gate_theta = 0.05;
+  t.lost_prior_sigma_xy = 2.0;
+  t.lost_prior_sigma_theta = 0.3;
+  LoopClosureParams l;
+  l.min_inlier_fraction = 0.4;
+  const auto o = eval::laserOptimumOptions(t, l);
+  EXPECT_EQ(o.radius, 2.5);
+  EXPECT_EQ(o.dense_max_index_gap, 12u);
+  EXPECT_EQ(o.gate_xy, 0.2);
+  EXPECT_EQ(o.gate_theta, 0.05);
+  EXPECT_EQ(o.failed_sigma_xy, 2.0);
+  EXPECT_EQ(o.failed_sigma_theta, 0.3);
+  EXPECT_EQ(o.min_inlier_fraction, 0.4);
+}

@@ -4,9 +4,8 @@
 #include "swslam/eval/ate.h"
 #include "swslam/eval/consistency.h"
 #include "swslam/loop/loop_closer.h"
+#include "swslam/pose_threshold.h"
 #include "swslam/tracking/local_tracker.h"
-
-#include <mrpt/math/wrap2pi.h>
 
 #include <cmath>
 #include <cstdio>
@@ -20,6 +19,19 @@ namespace
 {
 Pose2 asVector(const CPose2D& p) { return Pose2(p.x(), p.y(), p.phi()); }
 }  // namespace
+
+LaserOptimumOptions laserOptimumOptions(const TrackingParams& tracking, const LoopClosureParams& loops)
+{
+  LaserOptimumOptions o;
+  o.radius = tracking.dense_radius;
+  o.dense_max_index_gap = static_cast<size_t>(tracking.dense_max_index_gap);
+  o.gate_xy = tracking.dense_gate_xy;
+  o.gate_theta = tracking.dense_gate_theta;
+  o.min_inlier_fraction = loops.min_inlier_fraction;
+  o.failed_sigma_xy = tracking.lost_prior_sigma_xy;
+  o.failed_sigma_theta = tracking.lost_prior_sigma_theta;
+  return o;
+}
 
 LaserOptimumResult laserOptimum(const std::vector<Scan>& scans, const std::vector<CPose2D>& sensor_poses,
                                 const PlicpParams& plicp, const GraphOptimizerParams& graph,
@@ -40,10 +52,8 @@ LaserOptimumResult laserOptimum(const std::vector<Scan>& scans, const std::vecto
     result.pairs++;
     const CPose2D guess = sensor_poses[j] - sensor_poses[i];
     const MatchResult m = matchScans(ref, scans[j], guess, plicp);
-    const CPose2D correction = m.pose - guess;
     if (!m.ok() || matchInlierFraction(m) < options.min_inlier_fraction ||
-        correction.norm() > options.gate_xy ||
-        std::abs(mrpt::math::wrapToPi(correction.phi())) > options.gate_theta)
+        movedBeyond(guess, m.pose, MoveThreshold{options.gate_xy, options.gate_theta}))
       return;
     const EdgeKind kind = j == i + 1                              ? EdgeKind::Consecutive
                           : j - i <= options.dense_max_index_gap ? EdgeKind::DenseNeighbour

@@ -8,8 +8,10 @@
 
 #include <swslam/carmen_log.h>
 #include <swslam/graph_optimizer.h>
+#include <swslam/loop/loop_closure_params.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/scan.h>
+#include <swslam/tracking/tracking_params.h>
 #include <swslam/tum_io.h>
 
 #include <mrpt/poses/CPose2D.h>
@@ -30,6 +32,10 @@ struct LaserOptimumOptions
   double failed_sigma_xy = 1.0;      ///< [m] a failed consecutive match: a weak edge on the
   double failed_sigma_theta = 10 * M_PI / 180;  ///< trajectory's own step ([tracking] lost_prior_sigma_*)
 };
+
+/** The options a run's configuration implies: [tracking] dense_radius, dense_max_index_gap,
+ * dense_gate_xy / _theta, lost_prior_sigma_xy / _theta and [loop_closure] min_inlier_fraction. */
+LaserOptimumOptions laserOptimumOptions(const TrackingParams& tracking, const LoopClosureParams& loops);
 
 struct LaserOptimumResult
 {
