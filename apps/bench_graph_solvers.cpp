@@ -1,6 +1,6 @@
 #include "bench_graph_solvers.h"
 
-#include <swslam/sliding_window.h>
+#include <swslam/graph/sliding_window.h>
 
 #include <ceres/ceres.h>
 #include <mrpt/graphslam/levmarq.h>
@@ -44,7 +44,7 @@ void timeRuns(int repeats, const std::function<void()>& run, SolverRun& out)
 /** Same residual as swslam::se2Error, times the square root of the information. */
 struct RelativePoseCost
 {
-  RelativePoseCost(const swslam::Pose2& z, const Eigen::Matrix3d& info)
+  RelativePoseCost(const swslam::geometry::Pose2& z, const Eigen::Matrix3d& info)
       : z_(z), sqrt_info_(Eigen::LLT<Eigen::Matrix3d>(info).matrixL().transpose())
   {
   }
@@ -63,28 +63,28 @@ struct RelativePoseCost
       residual[r] = sqrt_info_(r, 0) * e[0] + sqrt_info_(r, 1) * e[1] + sqrt_info_(r, 2) * e[2];
     return true;
   }
-  swslam::Pose2 z_;
+  swslam::geometry::Pose2 z_;
   Eigen::Matrix3d sqrt_info_;
 };
 }  // namespace
 
-double chi2Of(const swslam::PoseGraph& graph)
+double chi2Of(const swslam::graph::PoseGraph& graph)
 {
-  return swslam::graphChi2(swslam::fullSubproblem(graph, {}).problem);
+  return swslam::graph::graphChi2(swslam::graph::fullSubproblem(graph, {}).problem);
 }
 
-SolverRun runOurs(const swslam::PoseGraph& graph, const swslam::GraphOptimizerParams& params,
+SolverRun runOurs(const swslam::graph::PoseGraph& graph, const swslam::graph::GraphOptimizerParams& params,
                   int repeats)
 {
   SolverRun run{"swslam", 0, 0, 0, graph};
   timeRuns(repeats, [&] {
     run.result = graph;
-    run.iterations = swslam::optimizeFull(run.result, params).iterations;
+    run.iterations = swslam::graph::optimizeFull(run.result, params).iterations;
   }, run);
   return run;
 }
 
-SolverRun runMrpt(const swslam::PoseGraph& graph, int repeats)
+SolverRun runMrpt(const swslam::graph::PoseGraph& graph, int repeats)
 {
   SolverRun run{"mrpt-levmarq", 0, 0, 0, graph};
   mrpt::graphs::CNetworkOfPoses2DInf net;
@@ -98,14 +98,14 @@ SolverRun runMrpt(const swslam::PoseGraph& graph, int repeats)
   return run;
 }
 
-SolverRun runCeres(const swslam::PoseGraph& graph, int repeats)
+SolverRun runCeres(const swslam::graph::PoseGraph& graph, int repeats)
 {
   SolverRun run{"ceres", 0, 0, 0, graph};
-  const std::vector<swslam::PoseGraph::TNodeID> ids = graph.nodeIds();
+  const std::vector<swslam::graph::PoseGraph::TNodeID> ids = graph.nodeIds();
   std::vector<double> x;
   timeRuns(repeats, [&] {
     x.clear();
-    std::unordered_map<swslam::PoseGraph::TNodeID, size_t> index;
+    std::unordered_map<swslam::graph::PoseGraph::TNodeID, size_t> index;
     for (const auto id : ids)
     {
       const auto& p = graph.pose(id);
@@ -119,7 +119,7 @@ SolverRun runCeres(const swslam::PoseGraph& graph, int repeats)
       const auto& m = e.measurement->mean;
       const size_t i = index[e.from], j = index[e.to];
       auto* cost = new ceres::AutoDiffCostFunction<RelativePoseCost, 3, 3, 3>(
-          new RelativePoseCost(swslam::Pose2(m.x(), m.y(), m.phi()),
+          new RelativePoseCost(swslam::geometry::Pose2(m.x(), m.y(), m.phi()),
                                e.measurement->cov_inv.asEigen()));
       problem.AddResidualBlock(cost, nullptr, &x[i], &x[j]);
     }

@@ -4,9 +4,9 @@
 #include "cli.h"
 #include "bench_graph_solvers.h"
 
-#include <swslam/graph_io.h>
-#include <swslam/sliding_window.h>
-#include <swslam/synthetic_graph.h>
+#include <swslam/graph/io.h>
+#include <swslam/graph/sliding_window.h>
+#include <swslam/graph/synthetic.h>
 
 #include <mrpt/system/CTicTac.h>
 
@@ -20,8 +20,8 @@ namespace
 struct BenchGraph
 {
   std::string name;
-  swslam::PoseGraph graph;
-  std::vector<swslam::Pose2> truth;  // empty if unknown
+  swslam::graph::PoseGraph graph;
+  std::vector<swslam::geometry::Pose2> truth;  // empty if unknown
 };
 
 
@@ -30,10 +30,10 @@ struct BenchGraph
 BenchGraph gridGraph(size_t nodes, size_t edges, size_t dense, int extent, double wrong,
                      unsigned seed)
 {
-  swslam::SyntheticGraphOptions o;
+  swslam::graph::SyntheticGraphOptions o;
   o.nodes = nodes, o.total_edges = edges, o.wrong_loop_fraction = wrong, o.seed = seed;
   o.dense_neighbours = dense, o.grid_half_extent = extent;
-  auto s = swslam::makeGridWalkGraph(o);
+  auto s = swslam::graph::makeGridWalkGraph(o);
   const std::string name = "grid-" + std::to_string(nodes) + "n-" +
                            std::to_string(s.graph.edgeCount()) + "e-" +
                            std::to_string(s.good_loops) + "loops-" +
@@ -50,7 +50,7 @@ void printRun(const BenchGraph& g, const SolverRun& r)
               1e3 * r.time_s, 1e3 * r.cpu_s, r.iterations, chi2Of(r.result));
   if (!g.truth.empty())
   {
-    const auto e = swslam::compareToTruth(r.result, g.truth);
+    const auto e = swslam::graph::compareToTruth(r.result, g.truth);
     std::printf(" rmse_xy %.4f m  max_xy %.4f m", e.rmse_xy, e.max_xy);
   }
   std::printf("\n");
@@ -61,7 +61,7 @@ void printRun(const BenchGraph& g, const SolverRun& r)
 double windowCost(size_t nodes, size_t window, int updates)
 {
   BenchGraph g = gridGraph(nodes, 3 * nodes, 2, extentFor(nodes), 0, 7);
-  swslam::GraphOptimizerParams params;
+  swslam::graph::GraphOptimizerParams params;
   params.window_size = window;
   std::mt19937 rng(3);
   std::normal_distribution<double> n01;
@@ -76,7 +76,7 @@ double windowCost(size_t nodes, size_t window, int updates)
                                                p.phi() + 0.01 * n01(rng)));
     }
     mrpt::system::CTicTac timer;
-    iters += swslam::optimizeWindow(g.graph, params).iterations;
+    iters += swslam::graph::optimizeWindow(g.graph, params).iterations;
     t.push_back(timer.Tac());
   }
   std::sort(t.begin(), t.end());
@@ -98,8 +98,8 @@ int main(int argc, char** argv)
   {
     std::vector<BenchGraph> graphs;
     const std::string circle = datasets.getValue() + "/graph_2d_circle_50nodes";
-    graphs.push_back({"mrpt-circle-50", swslam::loadGraph(circle + ".graph"),
-                      swslam::truthFromGraph(swslam::loadGraph(circle + "_groundtruth.graph"))});
+    graphs.push_back({"mrpt-circle-50", swslam::graph::loadGraph(circle + ".graph"),
+                      swslam::graph::truthFromGraph(swslam::graph::loadGraph(circle + "_groundtruth.graph"))});
     // The paper's Table I size, shaped like its graph: each node linked to its 3 predecessors
     // (consecutive + dense neighbours), the rest loops; then a loop-heavy graph of the same
     // size (a small area revisited over and over), and larger ones.
@@ -108,7 +108,7 @@ int main(int argc, char** argv)
     graphs.push_back(gridGraph(2000, 6000, 2, extentFor(2000), 0, 2));
     graphs.push_back(gridGraph(10000, 30000, 2, extentFor(10000), 0, 3));
 
-    swslam::GraphOptimizerParams l2;
+    swslam::graph::GraphOptimizerParams l2;
     l2.kernel_alpha = 2;
     std::printf("== Full optimization, alpha = 2 (median of %d runs, 1 thread)\n", repeats.getValue());
     bool all_chi2 = true, all_faster = true, all_faster_cpu = true;
@@ -148,10 +148,10 @@ int main(int argc, char** argv)
       BenchGraph g = gridGraph(638, 1952, 1, 8, wrong, 11);
       for (double alpha : {2.0, 0.0, -2.0})
       {
-        swslam::GraphOptimizerParams p;
+        swslam::graph::GraphOptimizerParams p;
         p.kernel_alpha = alpha;
         const SolverRun r = runOurs(g.graph, p, 1);
-        const auto e = swslam::compareToTruth(r.result, g.truth);
+        const auto e = swslam::graph::compareToTruth(r.result, g.truth);
         std::printf("  %2.0f%% wrong, alpha %4.1f: rmse_xy %8.4f m  max_xy %8.4f m  (%.2f ms)\n",
                     100 * wrong, alpha, e.rmse_xy, e.max_xy, 1e3 * r.time_s);
       }

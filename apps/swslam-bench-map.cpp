@@ -1,12 +1,11 @@
 // Benchmark: map construction (insert, update, re-insertion after a loop) on a log with
 // reference poses; optionally writes the map outputs of the result.
 #include "cli.h"
-#include <swslam/config_keys.h>
-#include <swslam/map/map_benchmark.h>
-#include <swslam/map/map_outputs.h>
-#include <swslam/tum_io.h>
+#include <swslam/bench/map_builder.h>
+#include <swslam/map/outputs.h>
+#include <swslam/common/tum_io.h>
+#include <swslam/system/config.h>
 
-#include <mrpt/config/CConfigFile.h>
 
 #include <iostream>
 
@@ -21,20 +20,20 @@ int main(int argc, char** argv)
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
-    swslam::MapParams params;
+    swslam::map::MapParams params;
     if (!config.getValue().empty())
-      params = swslam::loadStrict<swslam::MapParams>(mrpt::config::CConfigFile(config.getValue()), "map");
-    const auto data = swslam::loadScansWithTruth(input.getValue(), swslam::readTum(gt.getValue()));
-    swslam::MapBuilder builder(params);
-    const auto f = swslam::benchmarkMapBuilder(data, every.getValue(), builder);
+      params = swslam::system::loadSystemParams(config.getValue()).map;
+    const auto data = swslam::io::loadScansWithTruth(input.getValue(), swslam::common::readTum(gt.getValue()));
+    swslam::map::MapBuilder builder(params);
+    const auto f = swslam::bench::benchmarkMapBuilder(data, every.getValue(), builder);
     std::cout << "# " << input.getValue() << ", resolution " << params.resolution << " m\n"
-              << swslam::formatFigures(f);
+              << swslam::bench::formatFigures(f);
     if (!output.getValue().empty())
     {
-      swslam::RenderInput render;
+      swslam::map::RenderInput render;
       render.trajectory = data.truth;
       for (const auto& problem :
-           swslam::writeMapOutputs(output.getValue(), builder.snapshot(), params, &render))
+           swslam::map::writeMapOutputs(output.getValue(), builder.snapshot(), params, &render))
         std::cerr << "swslam-bench-map: " << problem.file << ": " << problem.message << "\n";
     }
     return 0;

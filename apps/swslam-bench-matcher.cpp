@@ -1,9 +1,8 @@
 // Benchmark: PLICP vs MRPT's CICP (classic, LM) on scan pairs of a log with reference poses.
 #include "cli.h"
-#include <swslam/config_keys.h>
-#include <swslam/matcher_benchmark.h>
+#include <swslam/bench/matcher.h>
+#include <swslam/system/config.h>
 
-#include <mrpt/config/CConfigFile.h>
 
 #include <iostream>
 
@@ -19,24 +18,24 @@ int main(int argc, char** argv)
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
-    swslam::PlicpParams params;
-    swslam::CorrelativeParams search;
+    swslam::plicp::PlicpParams params;
+    swslam::correlative::CorrelativeParams search;
     if (!config.getValue().empty())
     {
-      const mrpt::config::CConfigFile ini(config.getValue());
-      params = swslam::loadStrict<swslam::PlicpParams>(ini, "plicp");
-      search = swslam::loadStrict<swslam::CorrelativeParams>(ini, "correlative");
+      const auto loaded = swslam::system::loadSystemParams(config.getValue());
+      params = loaded.plicp;
+      search = loaded.correlative;
     }
     if (stride.getValue() < 1) throw std::invalid_argument("--stride must be >= 1");
-    const auto data = swslam::loadScansWithTruth(input.getValue(), swslam::readTum(gt.getValue()));
+    const auto data = swslam::io::loadScansWithTruth(input.getValue(), swslam::common::readTum(gt.getValue()));
     const auto& s0 = *data.scans.front();
     std::cout << "# " << input.getValue() << ": " << data.scans.size() << " scans of "
               << s0.getScanSize() << " beams over " << s0.aperture * 180 / M_PI << " deg, stride "
               << stride.getValue() << "\n";
-    for (const auto& row : swslam::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search))
-      std::cout << swslam::formatRow(row) << std::endl;
+    for (const auto& row : swslam::bench::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search))
+      std::cout << swslam::bench::formatRow(row) << std::endl;
     if (floor_arg.getValue())
-      std::cout << swslam::formatFloor(swslam::plicpFloor(data, stride.getValue(), params)) << std::endl;
+      std::cout << swslam::bench::formatFloor(swslam::bench::plicpFloor(data, stride.getValue(), params)) << std::endl;
     return 0;
   }
   catch (const std::exception& e)

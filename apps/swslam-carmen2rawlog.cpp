@@ -2,7 +2,7 @@
 // each line's own timestamp, plus the reference poses as a TUM file. See doc/carmen.md.
 
 #include "cli.h"
-#include <swslam/carmen2rawlog.h>
+#include <swslam/io/carmen2rawlog.h>
 
 #include <filesystem>
 #include <iostream>
@@ -40,7 +40,7 @@ int main(int argc, char** argv)
       if (!path.empty() && std::filesystem::exists(path) && !overwrite.getValue())
         throw std::runtime_error("'" + path + "' exists (use -w to overwrite)");
 
-    swslam::Carmen2RawlogOptions opts;
+    swslam::io::Carmen2RawlogOptions opts;
     opts.input = in.getValue();
     opts.output = out.getValue();
     opts.ground_truth = gt.getValue();
@@ -51,10 +51,10 @@ int main(int argc, char** argv)
     opts.reference_odometry = reference_odometry.getValue();
     if (quiet.getValue()) opts.params.max_printed_warnings = 0;
 
-    const auto stats = swslam::carmen2rawlog(opts);
+    const auto stats = swslam::io::carmen2rawlog(opts);
     std::cout << "wrote " << opts.output;
     if (!opts.ground_truth.empty()) std::cout << " and " << opts.ground_truth;
-    std::cout << "\n" << swslam::formatCarmenStats(stats);
+    std::cout << "\n" << swslam::io::formatCarmenStats(stats);
     return 0;
   }
   catch (const std::exception& e)

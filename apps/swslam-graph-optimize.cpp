@@ -1,11 +1,10 @@
 // Optimizes a whole pose-graph file (MRPT .graph, g2o or TORO) with the robust
 // Levenberg-Marquardt optimizer and writes the result in g2o form.
 #include "cli.h"
-#include <swslam/config_keys.h>
-#include <swslam/graph_io.h>
-#include <swslam/sliding_window.h>
+#include <swslam/graph/io.h>
+#include <swslam/graph/sliding_window.h>
+#include <swslam/system/config.h>
 
-#include <mrpt/config/CConfigFile.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -27,10 +26,9 @@ int main(int argc, char** argv)
     TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
-    swslam::GraphOptimizerParams params;
+    swslam::graph::GraphOptimizerParams params;
     if (config.isSet())
-      params = swslam::loadStrict<swslam::GraphOptimizerParams>(
-          mrpt::config::CConfigFile(config.getValue()), "graph_optimizer");
+      params = swslam::system::loadSystemParams(config.getValue()).graph_optimizer;
     if (alpha.isSet())
     {
       // A string, so that "-inf" (strtod's spelling) is accepted; nothing else may follow.
@@ -44,20 +42,20 @@ int main(int argc, char** argv)
     if (iters.isSet()) params.max_iterations = iters.getValue();
     params.check();
 
-    swslam::GraphLoadReport load;
-    swslam::PoseGraph graph = swslam::loadGraph(in.getValue(), &load);
+    swslam::graph::GraphLoadReport load;
+    swslam::graph::PoseGraph graph = swslam::graph::loadGraph(in.getValue(), &load);
     std::printf("loaded %zu vertices, %zu edges, %zu skipped lines\n", load.vertices, load.edges,
                 load.skipped_lines);
     for (size_t k = 0; k < load.skipped_lines; ++k)
       std::printf("  skipped line %zu: %s\n", load.skipped_line_numbers[k], load.skip_reasons[k].c_str());
 
-    const swslam::OptimizationReport r = swslam::optimizeFull(graph, params);
+    const swslam::graph::OptimizationReport r = swslam::graph::optimizeFull(graph, params);
     std::printf("status: %s (%s)\niterations: %zu\ninitial chi2: %.9g\nfinal chi2: %.9g\n"
                 "active squared residuals: %.9g\ntime: %.3f ms\n",
-                swslam::statusName(r.status), r.message.c_str(), r.iterations, r.initial_chi2,
+                swslam::graph::statusName(r.status), r.message.c_str(), r.iterations, r.initial_chi2,
                 r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
-    if (r.status == swslam::OptimizationStatus::Diverged) return 2;
-    swslam::saveGraph(graph, out.getValue());
+    if (r.status == swslam::graph::OptimizationStatus::Diverged) return 2;
+    swslam::graph::saveGraph(graph, out.getValue());
     return 0;
   }
   catch (const std::exception& e)

@@ -1,7 +1,7 @@
 // swslam-live: live mapping from a Hokuyo through MRPT's CHokuyoURG (see doc/live.md).
 #include "cli.h"
 
-#include <swslam/system/live_run.h>
+#include <swslam/app/live_run.h>
 
 #include <iostream>
 
@@ -26,7 +26,7 @@ int main(int argc, char** argv)
   TCLAP::SwitchArg no_render("", "no-render", "Skip render.png", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
-  swslam::LiveRunOptions o;
+  swslam::app::LiveRunOptions o;
   o.config = config.getValue();
   o.sensor_config = sensor.getValue();
   o.sensor_section = section.getValue();
@@ -38,5 +38,5 @@ int main(int argc, char** argv)
   o.deterministic = deterministic.getValue();
   o.status = !quiet.getValue();
   o.render = !no_render.getValue();
-  return swslam::runLive(o, std::cout, std::cerr);
+  return swslam::app::runLive(o, std::cout, std::cerr);
 }

@@ -2,11 +2,11 @@
 // 0.1 m for the offline map (see doc/system.md).
 #include "cli.h"
 
-#include <swslam/graph_io.h>
-#include <swslam/map/map_outputs.h>
-#include <swslam/system/regen_map.h>
-#include <swslam/system/run_outputs.h>
-#include <swslam/system_config.h>
+#include <swslam/graph/io.h>
+#include <swslam/map/outputs.h>
+#include <swslam/app/regen_map.h>
+#include <swslam/app/run_outputs.h>
+#include <swslam/system/config.h>
 
 #include <iostream>
 
@@ -23,21 +23,21 @@ int main(int argc, char** argv)
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
-    swslam::SystemParams params = swslam::loadSystemParams(config.getValue());
+    swslam::system::SystemParams params = swslam::system::loadSystemParams(config.getValue());
     if (resolution.isSet()) params.map.resolution = resolution.getValue();
-    swslam::RunResults run_data;
-    swslam::GraphLoadReport load;
-    run_data.graph = swslam::loadGraph(run.getValue() + "/graph.graph", &load);
+    swslam::system::RunResults run_data;
+    swslam::graph::GraphLoadReport load;
+    run_data.graph = swslam::graph::loadGraph(run.getValue() + "/graph.graph", &load);
     for (size_t k = 0; k < load.skipped_lines; ++k)
       std::cerr << "swslam-regen-map: graph.graph line " << load.skipped_line_numbers[k]
                 << " skipped: " << load.skip_reasons[k] << "\n";
-    run_data.keyframes = swslam::readTum(run.getValue() + "/keyframes.tum");
+    run_data.keyframes = swslam::common::readTum(run.getValue() + "/keyframes.tum");
     run_data.trajectory = run_data.keyframes;
-    swslam::RegenReport report;
-    const auto grid = swslam::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
+    swslam::app::RegenReport report;
+    const auto grid = swslam::app::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
                                             params.map, params.carmen, &report);
-    const swslam::RenderInput render = swslam::renderInputOf(run_data);
-    const auto problems = swslam::writeMapOutputs(output.getValue(), grid, params.map,
+    const swslam::map::RenderInput render = swslam::app::renderInputOf(run_data);
+    const auto problems = swslam::map::writeMapOutputs(output.getValue(), grid, params.map,
                                                   no_render.getValue() ? nullptr : &render);
     for (const auto& p : problems) std::cerr << "swslam-regen-map: " << p.file << ": " << p.message << "\n";
     std::cout << report.inserted << " of " << report.nodes << " node scans inserted at "

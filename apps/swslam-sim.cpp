@@ -1,8 +1,8 @@
 // swslam-sim: generates a natural-environment dataset (rawlog, ground truth, world
 // picture) from a scenario file. See doc/simulator.md.
 #include "cli.h"
-#include <swslam/sim_scenario.h>
-#include <swslam/simulator.h>
+#include <swslam/sim/scenario.h>
+#include <swslam/sim/simulator.h>
 
 
 #include <exception>

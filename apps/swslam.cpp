@@ -1,7 +1,7 @@
 // swslam: sliding-window 2D LiDAR SLAM on a rawlog or CARMEN log (see README and doc/system.md).
 #include "cli.h"
 
-#include <swslam/system/offline_run.h>
+#include <swslam/app/offline_run.h>
 
 #include <iostream>
 
@@ -26,7 +26,7 @@ int main(int argc, char** argv)
   TCLAP::SwitchArg no_render("", "no-render", "Skip render.png (no OpenGL needed)", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
-  swslam::OfflineRunOptions o;
+  swslam::app::OfflineRunOptions o;
   o.config = config.getValue();
   o.input = input.getValue();
   o.output = output.getValue();
@@ -38,5 +38,5 @@ int main(int argc, char** argv)
   o.use_odometry = !no_odometry.getValue();
   o.progress = !no_progress.getValue();
   o.render = !no_render.getValue();
-  return swslam::runOffline(o, std::cout, std::cerr);
+  return swslam::app::runOffline(o, std::cout, std::cerr);
 }

@@ -9,6 +9,16 @@ cmake --install "$bin" --prefix "$work/prefix" > "$work/install.log"
 test -f "$work/prefix/lib/cmake/swslam/swslamConfig.cmake" || { echo "no package config installed"; exit 1; }
 test -f "$work/prefix/include/swslam/plicp/plicp.h" || { echo "headers not installed"; exit 1; }
 test -f "$work/prefix/share/swslam/config/default.ini" || { echo "config not installed"; exit 1; }
+# The installed headers have the source's module folders, and nothing but headers.
+for dir in "$src"/libslam/swslam/*/; do
+  m=$(basename "$dir")
+  for h in "$dir"*.h; do
+    test -f "$work/prefix/include/swslam/$m/$(basename "$h")" || { echo "not installed: swslam/$m/$(basename "$h")"; exit 1; }
+  done
+done
+if find "$work/prefix/include/swslam" -type f ! -name '*.h' | grep -q .; then
+  echo "installed beside the headers:"; find "$work/prefix/include/swslam" -type f ! -name '*.h' | head; exit 1
+fi
 cmake -S "$src/tests/consumer" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
 cmake --build "$work/build" -j 2 > "$work/build.log" || { cat "$work/build.log"; exit 1; }

@@ -1,9 +1,9 @@
 #include "scip_sim_source.h"
 
-#include <swslam/sim_grid.h>
-#include <swslam/sim_sensor.h>
-#include <swslam/sim_terrain.h>
-#include <swslam/sim_vehicle.h>
+#include <swslam/sim/grid.h>
+#include <swslam/sim/sensor.h>
+#include <swslam/sim/terrain.h>
+#include <swslam/sim/vehicle.h>
 
 #include <cmath>
 #include <sstream>

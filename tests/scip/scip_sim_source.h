@@ -6,7 +6,7 @@
 
 #include "scip_protocol.h"
 
-#include <swslam/sim_scenario.h>
+#include <swslam/sim/scenario.h>
 
 #include <mrpt/poses/CPose2D.h>
 

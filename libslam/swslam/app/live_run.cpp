@@ -1,0 +1,151 @@
+#include <swslam/app/live_run.h>
+
+#include <swslam/io/hokuyo_link.h>
+#include <swslam/app/exit_codes.h>
+#include <swslam/common/ini_file.h>
+#include <swslam/app/progress_bar.h>
+#include <swslam/io/rawlog_recorder.h>
+#include <swslam/app/run_outputs.h>
+#include <swslam/app/skip_reporter.h>
+#include <swslam/system/slam_system.h>
+#include <swslam/app/stop_signal.h>
+
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+namespace swslam::app
+{
+using namespace std::chrono;
+
+namespace
+{
+std::string statusLine(const system::SystemStatus& s, const io::HokuyoLinkStats& link, double rate)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof(buf),
+                "%s %zu scans %.1f scans/s, %zu nodes, %zu loops, last match %s (%zu corr., %zu rays)%s",
+                link.connected ? "LIVE" : "WAITING FOR SENSOR", s.scans, rate, s.nodes, s.loops,
+                toString(s.last_match), s.last_correspondences, s.last_valid_rays,
+                s.skipped ? (", " + std::to_string(s.skipped) + " skipped").c_str() : "");
+  return buf;
+}
+
+/** Writes every output of what the system holds now (it keeps running). */
+int save(const system::SlamSystem& slam, const system::SystemParams& params, const LiveRunOptions& opts,
+         double wall, std::ostream& err, bool final_save)
+{
+  const system::RunResults results = slam.results();
+  const std::string text = "# swslam-live\n" + system::formatRunSummary(summarizeRun(results, wall));
+  const auto problems = writeRunOutputs(opts.output, results, slam.mapSnapshot(), params.map, text,
+                                        opts.render && final_save);
+  for (const auto& p : problems) err << "swslam-live: could not write " << p.file << ": " << p.message << "\n";
+  return problems.empty() ? 0 : kExitOutputError;
+}
+}  // namespace
+
+int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
+{
+  StopSignal stop;
+  std::signal(SIGPIPE, SIG_IGN);  // the driver writes to sockets the sensor may have closed
+  system::SystemParams params;
+  std::unique_ptr<io::HokuyoLink> link;
+  std::unique_ptr<io::RawlogRecorder> recorder;
+  try
+  {
+    // Checked before the stall timeout becomes whole milliseconds (a cast of a huge or NaN value).
+    if (!(opts.stall_timeout > 0 && opts.stall_timeout <= 3600))
+      throw std::invalid_argument("--stall-timeout " + std::to_string(opts.stall_timeout) + " must be in (0, 3600] s");
+    if (!(opts.save_period >= 0) || !(opts.duration >= 0) || !std::isfinite(opts.save_period) ||
+        !std::isfinite(opts.duration))
+      throw std::invalid_argument("--save-period and --duration must be finite and >= 0");
+    const auto cfg = common::readIniFile(opts.config);
+    const auto sensor_file = opts.sensor_config.empty() ? nullptr : common::readIniFile(opts.sensor_config);
+    // One file holding both, or swslam's config plus the sensor's own rawlog-grabber file
+    // (whose other sections, e.g. [global], are rawlog-grabber's and not read here).
+    params = sensor_file ? system::loadSystemParams(*cfg) : system::loadSystemParams(*cfg, {opts.sensor_section});
+    const mrpt::config::CConfigFileBase& sensor_cfg = sensor_file ? *sensor_file : *cfg;
+    io::HokuyoLinkOptions lo;
+    lo.stall_timeout = milliseconds(static_cast<long>(1000 * opts.stall_timeout));
+    link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
+                                        [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
+    std::filesystem::create_directories(opts.output);
+    recorder = std::make_unique<io::RawlogRecorder>(
+        opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam-live: " << e.what() << "\n";
+    return kExitUsage;
+  }
+
+  system::SlamSystem slam(params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
+  const auto t0 = steady_clock::now();
+  auto last_save = t0, last_status = t0;
+  const bool tty = opts.status && isTerminal(stderr);
+  // On a terminal a message starts on a new line, below the status line it interrupts.
+  SkipReporter skips(err, params.system.max_printed_warnings, tty ? "\nswslam-live: " : "swslam-live: ");
+  int code = 0;
+  while (!stop.requested() && slam.error().empty())
+  {
+    const auto now = steady_clock::now();
+    const double elapsed = duration<double>(now - t0).count();
+    if (opts.duration > 0 && elapsed >= opts.duration) break;
+    if (auto scan = link->poll())
+    {
+      try
+      {
+        recorder->write(*scan);
+      }
+      catch (const std::exception& e)
+      {
+        err << "swslam-live: " << e.what() << "; mapping goes on without recording\n";
+        recorder.reset();
+      }
+      const system::FeedResult r = slam.feed({scan, std::nullopt});
+      if (r.status != system::FeedStatus::Stopped && !r.message.empty())
+        skips.report(r.status, link->stats().scans - 1, r.message);
+    }
+    if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period))
+    {
+      if (recorder) recorder->flush();
+      code = std::max(code, save(slam, params, opts, elapsed, err, false));
+      last_save = now;
+    }
+    if (opts.status && now - last_status >= (tty ? milliseconds(250) : milliseconds(10000)))
+    {
+      const system::SystemStatus s = slam.status();
+      const std::string line = statusLine(s, link->stats(), s.scans / std::max(elapsed, 1e-3));
+      if (tty)
+        std::fprintf(stderr, "\r%s\033[K", line.c_str());
+      else
+        err << "swslam-live: " << line << "\n";
+      last_status = now;
+    }
+  }
+  if (tty) std::fprintf(stderr, "\n");
+  if (stop.requested()) err << "swslam-live: stopped by signal " << stop.signal() << "; writing the outputs\n";
+  if (recorder) recorder->flush();
+  slam.finish();
+  if (!slam.error().empty())
+  {
+    err << "swslam-live: " << slam.error() << "\n";
+    code = kExitModuleError;
+  }
+  const double wall = duration<double>(steady_clock::now() - t0).count();
+  code = std::max(code, save(slam, params, opts, wall, err, true));
+  const io::HokuyoLinkStats& ls = link->stats();
+  out << "# swslam-live: " << ls.scans << " scans received and " << (recorder ? recorder->written() : 0)
+      << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), "
+      << ls.stalls << " stall(s), " << ls.driver_messages << " driver error message(s)\n";
+  std::ifstream summary(opts.output + "/summary.md");
+  out << summary.rdbuf() << "# outputs in " << opts.output << "/\n";
+  return code;
+}
+
+}  // namespace swslam::app

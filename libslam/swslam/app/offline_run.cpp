@@ -1,0 +1,119 @@
+#include <swslam/app/offline_run.h>
+
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/app/progress_bar.h>
+#include <swslam/app/run_outputs.h>
+#include <swslam/io/scan_source.h>
+#include <swslam/app/skip_reporter.h>
+#include <swslam/system/slam_system.h>
+#include <swslam/app/stop_signal.h>
+#include <swslam/eval/report.h>
+
+#include <chrono>
+#include <malloc.h>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <thread>
+
+namespace swslam::app
+{
+int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err)
+{
+  StopSignal stop;
+  system::SystemParams params;
+  std::unique_ptr<io::ScanSource> source;
+  std::vector<common::StampedPose> truth;
+  try
+  {
+    params = system::loadSystemParams(opts.config);
+    if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
+    source = io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label}, params.carmen);
+    std::filesystem::create_directories(opts.output);
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: " << e.what() << "\n";
+    return kExitUsage;
+  }
+
+  const auto t0 = std::chrono::steady_clock::now();
+  auto slam = std::make_unique<system::SlamSystem>(params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
+  ProgressBar bar(stderr, opts.progress && isTerminal(stderr));
+  SkipReporter skips(err, params.system.max_printed_warnings, "swslam: ");
+  int code = kExitOk;
+  size_t read = 0;
+  try
+  {
+    sensor::ScanInput in;
+    std::optional<double> first_stamp;
+    while (!stop.requested() && (opts.max_scans == 0 || read < opts.max_scans) && source->next(in))
+    {
+      if (opts.realtime_factor > 0)
+      {
+        // Pacing, as a live sensor would deliver the scans.
+        const double t = mrpt::Clock::toDouble(in.observation->timestamp);
+        if (!first_stamp) first_stamp = t;
+        const double due = std::max(0.0, (t - *first_stamp) / opts.realtime_factor);
+        std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(std::min(due, 3600.0))));
+      }
+      const system::FeedResult r = slam->feed(std::move(in));
+      read++;
+      if (r.status == system::FeedStatus::Stopped) break;
+      if (!r.message.empty()) skips.report(r.status, read - 1, r.message);
+      if (!bar.due()) continue;  // the status is gathered only when the bar redraws
+      const system::SystemStatus st = slam->status();
+      bar.update(source->fractionRead(), st.scans,
+                 std::to_string(st.nodes) + " nodes " + std::to_string(st.loops) + " loops");
+    }
+  }
+  catch (const std::exception& e)
+  {
+    bar.done();
+    err << "swslam: input stopped after " << read << " scans: " << e.what()
+        << "\nswslam: writing the outputs of what was read\n";
+    code = kExitInputError;
+  }
+  slam->finish();
+  bar.done();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (stop.requested())
+  {
+    err << "swslam: stopped by signal " << stop.signal() << " after " << read
+        << " scans; writing the outputs\n";
+    code = kExitInterrupted;
+  }
+  if (!slam->error().empty())
+  {
+    err << "swslam: " << slam->error() << "\n";
+    if (code == kExitOk) code = kExitModuleError;
+  }
+
+  const system::RunResults results = slam->results();
+  const mrpt::maps::COccupancyGridMap2D grid = slam->mapSnapshot();
+  // The modules' memory is not needed for writing: give it back to the system before the
+  // off-screen render allocates its own (this keeps the run's peak memory down).
+  slam.reset();
+  malloc_trim(0);
+  system::RunSummary summary;
+  try
+  {
+    summary = summarizeRun(results, wall, truth.empty() ? nullptr : &truth);
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: ground truth: " << e.what() << "\n";
+    summary = summarizeRun(results, wall);
+  }
+  std::string text = "# swslam on " + source->describe() + " (" +
+                     (opts.deterministic ? "deterministic" : "threaded") + ")\n" + system::formatRunSummary(summary);
+  const auto problems = writeRunOutputs(opts.output, results, grid, params.map, text, opts.render);
+  for (const map::OutputProblem& p : problems) err << "swslam: could not write " << p.file << ": " << p.message << "\n";
+  if (!problems.empty() && code == kExitOk) code = kExitOutputError;
+  out << text << "# outputs in " << opts.output << "/ (map.png, " << (opts.render ? "render.png, " : "")
+      << "trajectory.tum, stats.csv, summary.md)\n";
+  return code;
+}
+
+}  // namespace swslam::app

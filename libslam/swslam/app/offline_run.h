@@ -1,0 +1,30 @@
+#pragma once
+// The `swslam` application: replays a rawlog or CARMEN log through the SLAM system and writes
+// every output. Lives in the library so that tests run exactly what the app runs.
+
+#include <swslam/app/exit_codes.h>
+
+#include <iosfwd>
+#include <string>
+
+namespace swslam::app
+{
+struct OfflineRunOptions
+{
+  std::string config;        ///< .ini (config/default.ini)
+  std::string input;         ///< rawlog, or CARMEN log (.log, .log.gz, .clf)
+  std::string output;        ///< output directory (created if missing)
+  std::string ground_truth;  ///< TUM file for ATE/RPE; empty: none
+  bool deterministic = false;
+  bool use_odometry = true;
+  std::string sensor_label;  ///< empty: the first laser in the log
+  bool progress = true;      ///< progress bar (drawn only on a terminal)
+  bool render = true;        ///< render.png
+  size_t max_scans = 0;      ///< stop after this many scans; 0: all
+  double realtime_factor = 0;  ///< > 0: replay paced at this multiple of the log's own rate
+};
+
+/** Runs; prints the Table I summary to `out`, warnings and the progress bar to stderr. */
+int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err);
+
+}  // namespace swslam::app

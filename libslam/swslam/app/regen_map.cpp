@@ -1,0 +1,42 @@
+#include <swslam/app/regen_map.h>
+
+#include <swslam/map/builder.h>
+#include <swslam/io/scan_source.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace swslam::app
+{
+mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
+                                              const std::vector<common::StampedPose>& keyframes,
+                                              const std::string& log_path, const map::MapParams& params,
+                                              const io::CarmenParams& carmen, RegenReport* report)
+{
+  if (keyframes.size() != graph.nodeCount())
+    throw std::runtime_error("regen-map: " + std::to_string(keyframes.size()) + " keyframes but " +
+                             std::to_string(graph.nodeCount()) + " graph nodes (not the same run?)");
+  map::MapBuilder builder(params);
+  auto source = io::openScanSource(log_path, io::ScanSourceOptions{false, ""}, carmen);
+  sensor::ScanInput in;
+  size_t next = 0;  // keyframes are in time order: one pass over the log
+  while (next < keyframes.size() && source->next(in))
+  {
+    const double t = mrpt::Clock::toDouble(in.observation->timestamp);
+    if (std::abs(t - keyframes[next].t) > 1e-5) continue;
+    if (!graph.hasNode(next)) throw std::runtime_error("regen-map: the graph has no node " + std::to_string(next));
+    builder.insert(next, *in.observation, graph.pose(next));
+    next++;
+  }
+  if (next < keyframes.size())
+  {
+    char buf[200];
+    std::snprintf(buf, sizeof(buf), "regen-map: node %zu's scan (t = %.6f s) is not in '%s'", next,
+                  keyframes[next].t, log_path.c_str());
+    throw std::runtime_error(buf);
+  }
+  if (report) *report = RegenReport{graph.nodeCount(), next};
+  return builder.snapshot();
+}
+
+}  // namespace swslam::app

@@ -1,0 +1,93 @@
+#include <swslam/app/run_outputs.h>
+
+#include <swslam/common/atomic_file.h>
+#include <swslam/eval/report.h>
+#include <swslam/graph/io.h>
+
+#include <filesystem>
+#include <functional>
+#include <unordered_map>
+
+namespace swslam::app
+{
+system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,
+                        const std::vector<common::StampedPose>* ground_truth, double max_dt)
+{
+  system::RunSummary s;
+  s.scans = results.stats.size();
+  s.skipped_scans = results.skipped;
+  s.nodes = results.graph.nodeCount();
+  s.constraints = results.graph.edgeCount();
+  s.loops = results.loops;
+  s.refinement_pairs = results.refinement_pairs;
+  s.refinement_edges = results.refinement_edges;
+  for (const system::ScanStats& r : results.stats)
+    if (r.source == tracking::TrackingSource::Odometry || r.source == tracking::TrackingSource::ConstantMotion)
+      s.fallback_scans++;
+  for (size_t i = 1; i < results.trajectory.size(); ++i)
+    s.distance += (results.trajectory[i].pose.translation() - results.trajectory[i - 1].pose.translation()).norm();
+  if (results.trajectory.size() > 1)
+    s.duration = results.trajectory.back().t - results.trajectory.front().t;
+  s.wall_time = wall_time;
+  s.map_bytes = results.map_bytes;
+  s.matching = system::summarizeTimes(results.stats, &system::ScanStats::match_ms, false);
+  s.tracking = system::summarizeTimes(results.stats, &system::ScanStats::tracking_ms, true);
+  s.graph = system::summarizeTimes(results.stats, &system::ScanStats::graph_ms, false);
+  s.map = system::summarizeTimes(results.stats, &system::ScanStats::map_ms, false);
+  if (ground_truth)
+  {
+    const eval::TrajectoryEvaluation e =
+        eval::evaluateTrajectory(results.trajectory, *ground_truth, max_dt, 1.0);
+    s.ate_rmse = e.ate.position.rmse;
+    s.rpe_step_rmse = e.rpe_step.translation.rmse;
+    s.rpe_metre_rmse = e.rpe_segment.translation.rmse;
+  }
+  return s;
+}
+
+map::RenderInput renderInputOf(const system::RunResults& results)
+{
+  map::RenderInput in;
+  for (const common::StampedPose& p : results.trajectory) in.trajectory.push_back(p.pose);
+  std::unordered_map<graph::PoseGraph::TNodeID, size_t> index;
+  for (const auto id : results.graph.nodeIds())
+  {
+    index[id] = in.nodes.size();
+    in.nodes.push_back(results.graph.pose(id));
+  }
+  for (size_t i = 0; i < results.graph.edgeCount(); ++i)
+  {
+    const graph::PoseGraph::Edge& e = results.graph.edge(i);
+    in.edges.emplace_back(index.at(e.from), index.at(e.to));
+  }
+  return in;
+}
+
+std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const system::RunResults& results,
+                                           const mrpt::maps::COccupancyGridMap2D& grid,
+                                           const map::MapParams& map_params, const std::string& summary,
+                                           bool render)
+{
+  const map::RenderInput render_input = renderInputOf(results);
+  std::vector<map::OutputProblem> problems =
+      map::writeMapOutputs(dir, grid, map_params, render ? &render_input : nullptr);
+  const std::filesystem::path d(dir);
+  auto attempt = [&](const char* file, const std::function<void(const std::string&)>& write) {
+    try
+    {
+      write((d / file).string());
+    }
+    catch (const std::exception& e)
+    {
+      problems.push_back({file, e.what()});
+    }
+  };
+  attempt("trajectory.tum", [&](const std::string& p) { common::writeTum(p, results.trajectory); });
+  attempt("keyframes.tum", [&](const std::string& p) { common::writeTum(p, results.keyframes); });
+  attempt("graph.graph", [&](const std::string& p) { graph::saveGraph(results.graph, p); });
+  attempt("stats.csv", [&](const std::string& p) { common::writeTextAtomically(p, system::formatStatsCsv(results.stats)); });
+  attempt("summary.md", [&](const std::string& p) { common::writeTextAtomically(p, summary); });
+  return problems;
+}
+
+}  // namespace swslam::app

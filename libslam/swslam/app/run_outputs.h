@@ -1,0 +1,30 @@
+#pragma once
+// A run's files, written into one directory, each atomically: trajectory.tum (every scan),
+// keyframes.tum, graph.graph (MRPT format), stats.csv, summary.md (Table I), and the map
+// outputs of writeMapOutputs (map.gridmap.gz, map.png, map.yaml + map.pgm, map.bt,
+// render.png).
+
+#include <swslam/map/outputs.h>
+#include <swslam/system/slam_system.h>
+
+#include <string>
+#include <vector>
+
+namespace swslam::app
+{
+/** Writes every output; one that fails does not stop the others (the failures are
+ * returned). Throws std::invalid_argument if `dir` cannot be created. */
+std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const system::RunResults& results,
+                                           const mrpt::maps::COccupancyGridMap2D& grid,
+                                           const map::MapParams& map_params, const std::string& summary,
+                                           bool render = true);
+
+/** Table I figures of a run; with a ground truth, also ATE and RPE (poses associated within
+ * `max_dt` seconds). Throws std::runtime_error if the ground truth does not overlap. */
+system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,
+                        const std::vector<common::StampedPose>* ground_truth = nullptr, double max_dt = 0.01);
+
+/** The render's input: the every-scan trajectory, the nodes and every graph edge. */
+map::RenderInput renderInputOf(const system::RunResults& results);
+
+}  // namespace swslam::app

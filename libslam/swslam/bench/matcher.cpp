@@ -1,0 +1,211 @@
+#include <swslam/bench/matcher.h>
+
+#include <swslam/plicp/correspondences.h>
+#include <swslam/plicp/run.h>
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/correlative/searched_match.h>
+#include <swslam/geometry/sensor_frame.h>
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/slam/CICP.h>
+#include <mrpt/system/CTicTac.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+namespace swslam::bench
+{
+namespace
+{
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::poses::CPose2D;
+
+/** A matcher under test: relative vehicle pose of `cur` w.r.t. `ref` from `guess`. */
+struct Estimate
+{
+  CPose2D pose;
+  int iterations = 0;
+  bool ok = true;
+};
+using MatcherFn =
+    std::function<Estimate(const CObservation2DRangeScan&, const CObservation2DRangeScan&, const CPose2D&)>;
+
+double quantile(std::vector<double> v, double q)
+{
+  if (v.empty()) return 0;
+  const size_t k = std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[k];
+}
+
+MatcherFn plicpMatcher(const plicp::PlicpParams& params)
+{
+  return [params](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                  const CPose2D& guess) {
+    // PLICP works in the sensor frame: convert the vehicle-frame guess and result.
+    const CPose2D s(a.sensorPose);
+    const plicp::ReferenceScan ref(sensor::scanFromObservation(a), params);
+    const plicp::MatchResult r = plicp::matchScans(ref, sensor::scanFromObservation(b), geometry::sensorMotion(s, guess), params);
+    return Estimate{geometry::vehicleMotion(s, r.pose), r.iterations, r.ok()};
+  };
+}
+
+/** PLICP as tracking uses it: when the match says its guess was poor (predictionFailed()),
+ * a correlative search around the guess over the reference scan's rays, then PLICP from the
+ * search's best pose (searchAndMatch()). The search grid is built per pair and timed. */
+MatcherFn plicpSearchMatcher(const plicp::PlicpParams& params, const correlative::CorrelativeParams& search)
+{
+  return [params, search](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                          const CPose2D& guess) {
+    const CPose2D s(a.sensorPose);
+    const plicp::ReferenceScan ref(sensor::scanFromObservation(a), params);
+    const sensor::Scan cur = sensor::scanFromObservation(b);
+    const CPose2D g = geometry::sensorMotion(s, guess);
+    plicp::MatchResult r = plicp::matchScans(ref, cur, g, params);
+    int iterations = r.iterations;
+    if (correlative::predictionFailed(r, g, search))
+    {
+      const correlative::SearchedMatch m = correlative::searchAndMatch(ref, correlative::searchPyramid(correlative::scanRays(ref.scan, search.max_range), search),
+                                             cur, g, r, search, params);
+      iterations += m.searched_iterations;
+      r = m.match;
+    }
+    return Estimate{geometry::vehicleMotion(s, r.pose), iterations, r.ok()};
+  };
+}
+
+MatcherFn cicpMatcher(mrpt::slam::TICPAlgorithm algorithm)
+{
+  return [algorithm](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                     const CPose2D& guess) {
+    mrpt::maps::CSimplePointsMap m1, m2;
+    m1.insertObservation(a);
+    m2.insertObservation(b);
+    mrpt::slam::CICP icp;  // MRPT's default parameters
+    icp.options.ICP_algorithm = algorithm;
+    mrpt::slam::CICP::TReturnInfo info;
+    const auto pdf = icp.Align(&m1, &m2, guess, info);
+    return Estimate{pdf->getMeanVal(), static_cast<int>(info.nIterations), true};
+  };
+}
+}  // namespace
+
+std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
+                                          const plicp::PlicpParams& plicp_params, const std::string& only,
+                                          const correlative::CorrelativeParams& search_params)
+{
+  std::vector<std::pair<std::string, MatcherFn>> methods = {
+      {"plicp", plicpMatcher(plicp_params)},
+      {"plicp+search", plicpSearchMatcher(plicp_params, search_params)},
+      {"cicp-classic", cicpMatcher(mrpt::slam::icpClassic)},
+      {"cicp-lm", cicpMatcher(mrpt::slam::icpLevenbergMarquardt)}};
+  if (!only.empty())
+  {
+    const auto it = std::find_if(methods.begin(), methods.end(),
+                                 [&](const auto& m) { return m.first == only; });
+    if (it == methods.end())
+      throw std::invalid_argument("unknown matcher '" + only +
+                                  "' (expected plicp, plicp+search, cicp-classic or cicp-lm)");
+    methods = {*it};
+  }
+  std::vector<MatcherRow> rows;
+  for (const std::string init : {"identity", "reference"})
+  {
+    for (const auto& [name, match] : methods)
+    {
+      MatcherRow row{name, init};
+      std::vector<double> times_us, trans_err;
+      double sq_t = 0, sq_r = 0, iters = 0;
+      for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+      {
+        const CPose2D ref_motion = data.truth[k + stride] - data.truth[k];
+        const CPose2D guess = init == "identity" ? CPose2D() : ref_motion;
+        mrpt::system::CTicTac timer;
+        const Estimate e = match(*data.scans[k], *data.scans[k + stride], guess);
+        times_us.push_back(timer.Tac() * 1e6);
+        const double et = (e.pose.translation() - ref_motion.translation()).norm();
+        const double er = std::remainder(e.pose.phi() - ref_motion.phi(), 2 * M_PI);
+        trans_err.push_back(et);
+        sq_t += et * et;
+        sq_r += er * er;
+        iters += e.iterations;
+        row.failures += e.ok ? 0 : 1;
+        row.pairs++;
+      }
+      if (row.pairs == 0) continue;
+      row.median_us = quantile(times_us, 0.5);
+      row.p95_us = quantile(times_us, 0.95);
+      row.mean_iters = iters / row.pairs;
+      row.trans_median_m = quantile(trans_err, 0.5);
+      row.trans_rmse_m = std::sqrt(sq_t / row.pairs);
+      row.rot_rmse_deg = std::sqrt(sq_r / row.pairs) * 180 / M_PI;
+      row.frac_under_5cm =
+          std::count_if(trans_err.begin(), trans_err.end(), [](double x) { return x < 0.05; }) /
+          static_cast<double>(row.pairs);
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+PlicpFloor plicpFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& params)
+{
+  PlicpFloor f;
+  std::vector<double> conversion, index, search, total;
+  for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+  {
+    const CObservation2DRangeScan& a = *data.scans[k];
+    const CPose2D guess =
+        geometry::sensorMotion(CPose2D(a.sensorPose), data.truth[k + stride] - data.truth[k]);
+    mrpt::system::CTicTac timer;
+    sensor::Scan ref_scan = sensor::scanFromObservation(a);
+    const sensor::Scan cur = sensor::scanFromObservation(*data.scans[k + stride]);
+    const double t_conversion = timer.Tac();
+    timer.Tic();
+    const plicp::ReferenceScan ref(std::move(ref_scan), params);
+    const double t_index = timer.Tac();
+    timer.Tic();
+    plicp::findCorrespondences(
+        ref.scan, ref.index, plicp::transformed(cur, Eigen::Vector3d(guess.x(), guess.y(), guess.phi())),
+        params.max_correspondence_dist);
+    const double t_search = timer.Tac();
+    conversion.push_back(t_conversion * 1e6);
+    index.push_back(t_index * 1e6);
+    search.push_back(t_search * 1e6);
+    total.push_back((t_conversion + t_index + t_search) * 1e6);
+  }
+  f.pairs = total.size();
+  f.conversion_us = quantile(conversion, 0.5);
+  f.index_us = quantile(index, 0.5);
+  f.search_us = quantile(search, 0.5);
+  f.total_us = quantile(total, 0.5);
+  return f;
+}
+
+std::string formatFloor(const PlicpFloor& f)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof(buf),
+                "%-13s init=%-9s pairs=%zu median_us=%.1f conversion_us=%.1f index_us=%.1f "
+                "search_us=%.1f",
+                "plicp-floor", "reference", f.pairs, f.total_us, f.conversion_us, f.index_us,
+                f.search_us);
+  return buf;
+}
+
+std::string formatRow(const MatcherRow& r)
+{
+  char buf[512];
+  std::snprintf(buf, sizeof(buf),
+                "%-13s init=%-9s pairs=%zu median_us=%.1f p95_us=%.1f iters=%.1f "
+                "trans_median_m=%.4f trans_rmse_m=%.4f rot_rmse_deg=%.3f frac_under_5cm=%.3f "
+                "failures=%zu",
+                r.method.c_str(), r.init.c_str(), r.pairs, r.median_us, r.p95_us, r.mean_iters,
+                r.trans_median_m, r.trans_rmse_m, r.rot_rmse_deg, r.frac_under_5cm, r.failures);
+  return buf;
+}
+
+}  // namespace swslam::bench

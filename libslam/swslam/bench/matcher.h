@@ -1,0 +1,54 @@
+#pragma once
+// Benchmark of scan matchers on consecutive scan pairs with reference poses: our PLICP
+// against MRPT's CICP (classic and Levenberg-Marquardt), each from identity and from the
+// reference relative pose. Used by apps/swslam-bench-matcher.
+
+#include <swslam/correlative/params.h>
+#include <swslam/plicp/plicp.h>
+#include <swslam/io/scans_with_truth.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <string>
+#include <vector>
+
+namespace swslam::bench
+{
+/** Figures of one method from one initial guess, over all pairs. */
+struct MatcherRow
+{
+  std::string method, init;
+  size_t pairs = 0, failures = 0;
+  double median_us = 0, p95_us = 0, mean_iters = 0;
+  double trans_median_m = 0, trans_rmse_m = 0, rot_rmse_deg = 0, frac_under_5cm = 0;
+};
+
+/** Runs every method (or only the one named `only`, if not empty) from each initial guess on
+ * pairs (k, k + stride): `plicp`, `plicp+search` (PLICP, and when its guess looks poor the
+ * correlative search of tracking with `search_params`, then PLICP from the search's pose),
+ * `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose. Throws
+ * std::invalid_argument for an unknown method name. */
+std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
+                                          const plicp::PlicpParams& plicp_params,
+                                          const std::string& only = "",
+                                          const correlative::CorrelativeParams& search_params = {});
+
+/** The work every PLICP match at full resolution does before its first closed-form step, on
+ * the pairs of benchmarkMatchers() from the reference guess: both scans converted
+ * (scanFromObservation), the reference scan's index built (ReferenceScan) and one
+ * correspondence search. Median microseconds of each part and of their per-pair sum: no
+ * PLICP of this design matches faster than `total_us`. */
+struct PlicpFloor
+{
+  size_t pairs = 0;
+  double conversion_us = 0, index_us = 0, search_us = 0, total_us = 0;
+};
+PlicpFloor plicpFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& params);
+
+/** "plicp-floor init=reference pairs=... median_us=... conversion_us=... index_us=... search_us=...". */
+std::string formatFloor(const PlicpFloor& floor);
+
+/** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
+std::string formatRow(const MatcherRow& row);
+
+}  // namespace swslam::bench

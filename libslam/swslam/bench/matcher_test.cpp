@@ -1,0 +1,70 @@
+// The matcher benchmark (swslam-bench-matcher): its rows on a synthetic walk through a room,
+// and the floor of a full-resolution PLICP match.
+#include "test_support.h"
+
+#include <swslam/bench/matcher.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+
+namespace
+{
+using mrpt::poses::CPose2D;
+
+/** Scans every 0.2 m and 2 deg along a straight walk through the room, with their poses. */
+swslam::io::ScansWithTruth roomWalk(size_t n)
+{
+  const auto world = swslam::test::roomWorld();
+  std::mt19937 rng(7);
+  swslam::io::ScansWithTruth data;
+  for (size_t k = 0; k < n; k++)
+  {
+    const CPose2D pose(-3.0 + 0.2 * k, -1.0 + 0.05 * k, 0.035 * k);
+    auto obs = std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+        swslam::test::simulateObservation(world, pose, 361, M_PI, 30, 0.01, rng));
+    data.scans.push_back(obs);
+    data.truth.push_back(pose);
+  }
+  return data;
+}
+}  // namespace
+
+TEST(MatcherBenchmark, RowsOfEveryMethodFromBothGuesses)
+{
+  const auto data = roomWalk(6);
+  const auto rows = swslam::bench::benchmarkMatchers(data, 1, swslam::plicp::PlicpParams());
+  ASSERT_EQ(rows.size(), 8u);  // 4 methods x 2 guesses
+  for (const auto& r : rows)
+  {
+    EXPECT_EQ(r.pairs, 5u) << r.method;
+    EXPECT_GT(r.median_us, 0.0) << r.method;
+    if (r.init == "reference" && r.method.rfind("plicp", 0) == 0)
+    {
+      EXPECT_LT(r.trans_rmse_m, 0.02) << r.method;
+      EXPECT_EQ(r.failures, 0u) << r.method;
+    }
+  }
+  EXPECT_EQ(swslam::bench::benchmarkMatchers(data, 2, swslam::plicp::PlicpParams(), "plicp").size(), 2u);
+  EXPECT_EQ(swslam::bench::benchmarkMatchers(data, 2, swslam::plicp::PlicpParams(), "plicp").front().pairs, 2u);
+  EXPECT_THROW(swslam::bench::benchmarkMatchers(data, 1, swslam::plicp::PlicpParams(), "plicp2"),
+               std::invalid_argument);
+}
+
+TEST(MatcherBenchmark, FloorTimesEachPartAndTheirSum)
+{
+  const auto data = roomWalk(6);
+  const swslam::bench::PlicpFloor f = swslam::bench::plicpFloor(data, 1, swslam::plicp::PlicpParams());
+  EXPECT_EQ(f.pairs, 5u);
+  EXPECT_GT(f.conversion_us, 0.0);
+  EXPECT_GT(f.index_us, 0.0);
+  EXPECT_GT(f.search_us, 0.0);
+  // Each pair's sum is at least each of its parts, so the medians keep that order.
+  EXPECT_GE(f.total_us, f.conversion_us);
+  EXPECT_GE(f.total_us, f.index_us);
+  EXPECT_GE(f.total_us, f.search_us);
+  EXPECT_EQ(swslam::bench::plicpFloor(data, 3, swslam::plicp::PlicpParams()).pairs, 1u);
+  EXPECT_NE(swslam::bench::formatFloor(f).find("plicp-floor   init=reference pairs=5 median_us="),
+            std::string::npos);
+}

@@ -1,0 +1,24 @@
+#pragma once
+// The one way every program and scenario reads an .ini file: the file must exist, and every
+// line must be blank, a comment, '[section]' or 'key = value', each key set once, before
+// MRPT parses it (MRPT's reader skips a stray line, and keeps one of two settings, silently).
+// What the sections hold is checked by each parameter struct's strict loading
+// (config_keys.h).
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <memory>
+#include <string>
+
+namespace swslam::common
+{
+/** Throws std::invalid_argument naming `source` and the line if a line of the .ini `text` is
+ * neither blank, a comment (# or ;), '[section]' nor 'key = value' (MRPT's reader skips such
+ * lines silently), or sets a key its section already set (MRPT keeps one, silently). */
+void checkIniLines(const std::string& text, const std::string& source);
+
+/** The .ini file at `path`, its lines checked (checkIniLines). Throws std::invalid_argument
+ * naming the file if it cannot be read, or the line that is wrong. */
+std::unique_ptr<mrpt::config::CConfigFileMemory> readIniFile(const std::string& path);
+
+}  // namespace swslam::common

@@ -1,0 +1,51 @@
+#include <swslam/common/tum_io.h>
+
+#include <swslam/common/atomic_file.h>
+#include <swslam/common/number_rows.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace swslam::common
+{
+std::vector<StampedPose> readTum(const std::string& path)
+{
+  // A quaternion far from unit length is no rotation (all zeros read as yaw 0, silently);
+  // 1% leaves room for files written with few decimals.
+  auto unit_quaternion = [](const std::array<double, 8>& r) -> std::string {
+    const double norm = std::sqrt(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7]);
+    if (std::abs(norm - 1) <= 0.01) return {};
+    char buf[120];
+    std::snprintf(buf, sizeof(buf), "quaternion (%g %g %g %g) has norm %g, not 1", r[4], r[5], r[6], r[7], norm);
+    return buf;
+  };
+  std::vector<StampedPose> out;
+  for (const auto& [t, x, y, z, qx, qy, qz, qw] :
+       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw", unit_quaternion))
+  {
+    const double yaw = std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz));
+    out.push_back({t, mrpt::poses::CPose2D(x, y, yaw)});
+  }
+  return out;
+}
+
+std::string formatTum(const std::vector<StampedPose>& poses)
+{
+  std::string s = "# timestamp x y z qx qy qz qw\n";
+  char buf[256];
+  for (const auto& p : poses)
+  {
+    const double h = 0.5 * p.pose.phi();
+    std::snprintf(buf, sizeof(buf), "%.6f %.9g %.9g 0 0 0 %.9g %.9g\n", p.t, p.pose.x(),
+                  p.pose.y(), std::sin(h), std::cos(h));
+    s += buf;
+  }
+  return s;
+}
+
+void writeTum(const std::string& path, const std::vector<StampedPose>& poses)
+{
+  writeTextAtomically(path, formatTum(poses));
+}
+
+}  // namespace swslam::common

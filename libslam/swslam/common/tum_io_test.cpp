@@ -1,0 +1,79 @@
+#include <swslam/common/atomic_file.h>
+#include <swslam/common/tum_io.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "test_support.h"
+
+TEST(TumIo, RoundTripKeepsPosesAndTimes)
+{
+  const auto dir = swslam::test::tempDir("tum");
+  std::vector<swslam::common::StampedPose> poses = {{0.5, {1, 2, 0.3}}, {1.25, {-3, 4.5, -2.9}},
+                                            {1700000000.125, {0, 0, M_PI - 1e-6}}};
+  swslam::common::writeTum(dir + "/a.tum", poses);
+  const auto back = swslam::common::readTum(dir + "/a.tum");
+  ASSERT_EQ(back.size(), poses.size());
+  for (size_t i = 0; i < poses.size(); i++)
+  {
+    EXPECT_NEAR(back[i].t, poses[i].t, 1e-6);
+    EXPECT_NEAR(back[i].pose.x(), poses[i].pose.x(), 1e-6);
+    EXPECT_NEAR(back[i].pose.y(), poses[i].pose.y(), 1e-6);
+    EXPECT_NEAR(std::remainder(back[i].pose.phi() - poses[i].pose.phi(), 2 * M_PI), 0, 1e-6);
+  }
+}
+
+TEST(TumIo, MalformedLineNamesTheLine)
+{
+  const auto dir = swslam::test::tempDir("tum_bad");
+  std::ofstream(dir + "/b.tum") << "# header\n0 0 0 0 0 0 0 1\n1 2 three 0 0 0 0 1\n";
+  try
+  {
+    swslam::common::readTum(dir + "/b.tum");
+    FAIL();
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TumIo, AQuaternionThatIsNotUnitIsAnErrorNamingTheLine)
+{
+  // All zeros read as yaw 0, silently; a quaternion written with 4 decimals still loads.
+  const auto dir = swslam::test::tempDir("tum_quat");
+  std::ofstream(dir + "/q.tum") << "0 0 0 0 0 0 0.3827 0.9239\n1 1 0 0 0 0 0 0\n";
+  try
+  {
+    swslam::common::readTum(dir + "/q.tum");
+    FAIL();
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("line 2: quaternion (0 0 0 0) has norm 0"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir + "/ok.tum") << "0 0 0 0 0 0 0.3827 0.9239\n";
+  EXPECT_NEAR(swslam::common::readTum(dir + "/ok.tum").at(0).pose.phi(), M_PI / 4, 1e-3);
+}
+
+TEST(AtomicFile, FailedWriterLeavesPreviousFileIntact)
+{
+  const auto dir = swslam::test::tempDir("atomic");
+  const auto path = dir + "/out.txt";
+  swslam::common::writeTextAtomically(path, "first");
+  EXPECT_THROW(swslam::common::writeAtomically(path,
+                                       [](const std::string& tmp) {
+                                         std::ofstream(tmp) << "half";
+                                         throw std::runtime_error("interrupted");
+                                       }),
+               std::runtime_error);
+  std::ifstream f(path);
+  std::string content;
+  f >> content;
+  EXPECT_EQ(content, "first");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+}

@@ -1,0 +1,46 @@
+#pragma once
+// Parameters of the correlative search that re-aligns a tracking match whose prediction
+// failed, section [correlative] (doc/tracking.md).
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <cmath>
+
+namespace swslam::correlative
+{
+struct CorrelativeParams : public mrpt::config::CLoadableOptions
+{
+  bool enabled = true;  ///< false: neither tracking nor loop checks ever search
+  // When a scan is searched: its match against the keyframe ...
+  double trigger_correction_xy = 0.1;  ///< [m] ... moved the prediction more than this,
+  double trigger_correction_theta = 2.0 * M_PI / 180;  ///< [rad] or turned it more (ini: _DEG),
+  double trigger_inlier_fraction = 0.5;  ///< or ended with fewer inliers than this (or failed)
+  int trust_prediction_after = 10;  ///< ...unless it kept a prediction confirmed this many scans in a row (0: never)
+  // The search.
+  int submap_keyframes = 5;  ///< the score grid holds the points of the last this many keyframes
+  double resolution = 0.1;  ///< [m] score grid cell, and translation step
+  double sigma = 0.1;       ///< [m] score kernel: exp(-d^2 / 2 sigma^2)
+  double free_space_score = -1.0;  ///< in [-1, 0]: score of a point where the keyframes saw free space
+  double window_xy = 3.0;   ///< [m] translations within +- this of the prediction
+  double window_theta = M_PI;  ///< [rad] rotations within +- this (ini: window_theta_DEG)
+  double theta_step = 1.0 * M_PI / 180;  ///< [rad] rotation step (ini: theta_step_DEG)
+  double cost_per_m = 0.02;    ///< motion prior: objective = score - cost_per_m |t - t_pred| ...
+  double cost_per_rad = 0.1;  ///< ... - cost_per_rad |theta - theta_pred|
+  double max_range = 30.0;  ///< [m] farther points are left out of the grid and the search
+  double min_score = 0.1;   ///< a search result scores at least this (mean cell value, 0..1)
+  double min_score_gain = 0.02;  ///< the searched match replaces the first only if its objective is this much higher
+  /** [m] when PLICP from the search's pose ends at a lower objective than that pose's, it is
+   * run again from it with this correspondence radius (0: never), the better one kept */
+  double refine_correspondence_dist = 0.3;
+  // Steady-motion prior (tracking/steady_motion.h): while the last 3 steps average at least
+  // steady_min_step, the search also loses steady_prior_cost (d / sigma)^2 at a distance d from
+  // the prediction, sigma the spread of the recent steps (at least steady_sigma_min).
+  double steady_prior_cost = 0.002;  ///< score lost at one sigma (0: no such prior)
+  double steady_sigma_min = 0.3;     ///< [m]
+  double steady_min_step = 0.5;      ///< [m] per scan
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+}  // namespace swslam::correlative

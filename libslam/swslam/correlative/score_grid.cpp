@@ -1,0 +1,129 @@
+#include <swslam/correlative/score_grid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace swslam::correlative
+{
+Eigen::Vector2i ScoreGrid::cellOf(const Eigen::Vector2d& p) const
+{
+  return {static_cast<int>(std::floor((p.x() - origin.x()) / resolution)),
+          static_cast<int>(std::floor((p.y() - origin.y()) / resolution))};
+}
+
+ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution,
+                         double sigma, int pad_cells)
+{
+  if (!(resolution > 0) || !(sigma > 0) || pad_cells < 0)
+    throw std::invalid_argument("buildScoreGrid: resolution and sigma must be > 0, pad_cells >= 0");
+  ScoreGrid g;
+  g.resolution = resolution;
+  g.pad_cells = pad_cells;
+  if (points.empty()) return g;
+  Eigen::Vector2d lo = points.front(), hi = points.front();
+  for (const auto& p : points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double reach = 3 * sigma;
+  const int reach_cells = static_cast<int>(std::ceil(reach / resolution));
+  g.origin = lo - Eigen::Vector2d::Constant((reach_cells + pad_cells) * resolution);
+  const Eigen::Vector2i top = g.cellOf(hi);
+  g.width = top.x() + reach_cells + pad_cells + 1;
+  g.height = top.y() + reach_cells + pad_cells + 1;
+  g.cells.assign(static_cast<size_t>(g.width) * g.height, 0);
+  // The max of the points' kernels is the kernel of the nearest point.
+  const double inv2s2 = 1 / (2 * sigma * sigma);
+  for (const auto& p : points)
+  {
+    const Eigen::Vector2i c = g.cellOf(p);
+    for (int y = c.y() - reach_cells; y <= c.y() + reach_cells; y++)
+      for (int x = c.x() - reach_cells; x <= c.x() + reach_cells; x++)
+      {
+        const Eigen::Vector2d centre = g.origin + (Eigen::Vector2d(x, y).array() + 0.5).matrix() * resolution;
+        const double d2 = (centre - p).squaredNorm();
+        if (d2 > reach * reach) continue;
+        const auto v = static_cast<int16_t>(std::lround(255 * std::exp(-d2 * inv2s2)));
+        int16_t& cell = g.cells[static_cast<size_t>(y) * g.width + x];
+        cell = std::max(cell, v);
+      }
+  }
+  return g;
+}
+
+void markFreeSpace(ScoreGrid& g, const std::vector<Ray>& rays, int free_value)
+{
+  if (free_value > 0) throw std::invalid_argument("markFreeSpace: free_value must be <= 0");
+  const double step = g.resolution / 2;
+  for (const Ray& r : rays)
+  {
+    const Eigen::Vector2d d = r.hit - r.origin;
+    const double length = d.norm();
+    if (!(length > 0)) continue;
+    const Eigen::Vector2d u = d / length;
+    for (double s = 0; s < length; s += step)
+    {
+      const Eigen::Vector2i c = g.cellOf(r.origin + s * u);
+      if (c.x() < 0 || c.y() < 0 || c.x() >= g.width || c.y() >= g.height) continue;
+      int16_t& cell = g.cells[static_cast<size_t>(c.y()) * g.width + c.x()];
+      if (cell == 0) cell = static_cast<int16_t>(free_value);
+    }
+  }
+}
+
+ScorePyramid::ScorePyramid(ScoreGrid base, int depth)
+{
+  if (depth < 0 || depth > 20 || base.pad_cells < (1 << depth) - 1)
+    throw std::invalid_argument("ScorePyramid: depth " + std::to_string(depth) +
+                                " needs a base grid padded by 2^depth - 1 cells (it has " +
+                                std::to_string(base.pad_cells) + ")");
+  levels.push_back(std::move(base));
+  // Level h from level h-1: the window of side 2^h is four windows of side 2^(h-1); the max
+  // is taken along x, then along y.
+  const int w = levels.front().width, ht = levels.front().height;
+  for (int h = 1; h <= depth; h++)
+  {
+    const int s = 1 << (h - 1);
+    const std::vector<int16_t>& prev = levels.back().cells;
+    std::vector<int16_t> along_x(prev.size());
+    for (int y = 0; y < ht; y++)
+    {
+      const int16_t* row = &prev[static_cast<size_t>(y) * w];
+      int16_t* out = &along_x[static_cast<size_t>(y) * w];
+      // A partner outside the grid scores 0 (ScoreGrid::at), which a free cell is below.
+      for (int x = 0; x < w; x++) out[x] = std::max(row[x], x + s < w ? row[x + s] : int16_t{0});
+    }
+    ScoreGrid next = levels.back();
+    for (int y = 0; y < ht; y++)
+    {
+      const int16_t* a = &along_x[static_cast<size_t>(y) * w];
+      int16_t* out = &next.cells[static_cast<size_t>(y) * w];
+      if (y + s < ht)
+      {
+        const int16_t* b = &along_x[static_cast<size_t>(y + s) * w];
+        for (int x = 0; x < w; x++) out[x] = std::max(a[x], b[x]);
+      }
+      else
+        for (int x = 0; x < w; x++) out[x] = std::max(a[x], int16_t{0});
+    }
+    levels.push_back(std::move(next));
+  }
+}
+
+std::vector<Eigen::Vector2d> thinPoints(const std::vector<Eigen::Vector2d>& points,
+                                        double min_spacing, double max_range)
+{
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& p : points)
+  {
+    if (p.norm() > max_range) continue;
+    if (!out.empty() && (p - out.back()).norm() < min_spacing) continue;
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace swslam::correlative

@@ -1,0 +1,232 @@
+#include <swslam/correlative/search.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+
+namespace swslam::correlative
+{
+namespace
+{
+/** The motion prior's cost of a translation d from the window's centre (increasing in d, so
+ * a block's nearest point bounds it). */
+double translationCost(const SearchWindow& w, double d) { return w.cost_per_m * d + w.cost_per_m2 * d * d; }
+/** Cells of the points turned by theta and moved by the window's centre. */
+std::vector<Eigen::Vector2i> rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts,
+                                          double theta, const Eigen::Vector2d& t)
+{
+  const double c = std::cos(theta), s = std::sin(theta);
+  std::vector<Eigen::Vector2i> out;
+  out.reserve(pts.size());
+  for (const auto& p : pts) out.push_back(g.cellOf({c * p.x() - s * p.y() + t.x(), s * p.x() + c * p.y() + t.y()}));
+  return out;
+}
+
+int32_t sumAt(const ScoreGrid& g, const std::vector<Eigen::Vector2i>& cells, int i, int j)
+{
+  int32_t sum = 0;
+  for (const auto& c : cells) sum += g.at(c.x() + i, c.y() + j);
+  return sum;
+}
+
+int halfCells(const SearchWindow& w, double resolution)
+{
+  return static_cast<int>(std::floor(w.half_xy / resolution + 1e-9));
+}
+
+/** Smallest sum that reaches min_score (at least 1: a pose touching no cell is no result). */
+int32_t threshold(double min_score, size_t n)
+{
+  return std::max<int32_t>(1, static_cast<int32_t>(std::ceil(min_score * 255.0 * n - 1e-9)));
+}
+
+/** The lattice's poses and their objectives: angle k, translation centre + (i, j) cells. */
+class Lattice
+{
+ public:
+  Lattice(const ScoreGrid& base, const std::vector<Eigen::Vector2d>& points, const SearchWindow& w)
+      : w_(w), res_(base.resolution), n_(halfCells(w, base.resolution)), angles_(windowAngles(w)),
+        norm_(255.0 * points.size())
+  {
+    for (double a : angles_) cells_.push_back(rotatedCells(base, points, a, w.centre.head<2>()));
+  }
+  int n() const { return n_; }
+  bool excluded(int i, int j) const
+  {
+    return correlative::excluded(w_, w_.centre.head<2>() + res_ * Eigen::Vector2d(i, j));
+  }
+  int angleCount() const { return static_cast<int>(angles_.size()); }
+  int32_t sum(const ScoreGrid& level, int k, int i, int j) const { return sumAt(level, cells_[k], i, j); }
+  /** The objective with cell sum `sum` at the best pose of the block of offsets [i0, i1] x
+   * [j0, j1] (its point nearest the centre): an upper bound over the block when `sum` bounds
+   * the block's sums, the exact objective of a single pose. */
+  double objective(int32_t sum, int k, int i0, int i1, int j0, int j1) const
+  {
+    auto gap = [](int lo, int hi) { return lo > 0 ? lo : (hi < 0 ? -hi : 0); };
+    return sum / norm_ - w_.cost_per_rad * std::abs(std::remainder(angles_[k] - w_.centre.z(), 2 * M_PI)) -
+           translationCost(w_, res_ * std::hypot(gap(i0, i1), gap(j0, j1)));
+  }
+  SearchResult result(int k, int i, int j, int32_t sum, size_t evaluated) const
+  {
+    SearchResult r;
+    r.pose = {w_.centre.x() + i * res_, w_.centre.y() + j * res_, angles_[k]};
+    r.score = sum / norm_;
+    r.objective = objective(sum, k, i, i, j, j);
+    r.bounds_evaluated = evaluated;
+    return r;
+  }
+
+ private:
+  SearchWindow w_;
+  double res_;
+  int n_;
+  std::vector<double> angles_;
+  double norm_;
+  std::vector<std::vector<Eigen::Vector2i>> cells_;
+};
+
+struct Candidate
+{
+  int k, i, j;    ///< angle index, lowest translation offset of the block (cells)
+  int32_t sum;   ///< sum of the level's cells: bounds the sums of the block's poses
+  double bound;   ///< objective bound of the block
+};
+
+/** Depth-first branch and bound (Hess et al. 2016, alg. 3): best bound first, and prune
+ * what cannot beat the best objective found. */
+class BranchAndBound
+{
+ public:
+  BranchAndBound(const ScorePyramid& p, const Lattice& lattice, int32_t needed)
+      : pyramid_(p), lattice_(lattice), needed_(needed)
+  {
+  }
+  Candidate bounded(int k, int i, int j, int h)
+  {
+    evaluated_++;
+    const int last = lattice_.n(), side = (1 << h) - 1;
+    const int32_t sum = lattice_.sum(pyramid_.levels[h], k, i, j);
+    return {k, i, j, sum, lattice_.objective(sum, k, i, std::min(i + side, last), j, std::min(j + side, last))};
+  }
+  void descend(std::vector<Candidate>& cands, int h)
+  {
+    std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
+      return a.bound != b.bound ? a.bound > b.bound
+                                : std::tie(a.k, a.i, a.j) < std::tie(b.k, b.i, b.j);
+    });
+    for (const Candidate& c : cands)
+    {
+      if (best_ && c.bound <= best_->bound) return;  // sorted: nothing later does better
+      if (c.sum < needed_) continue;  // no pose of the block reaches min_score
+      if (h == 0)
+      {
+        if (lattice_.excluded(c.i, c.j)) continue;
+        best_ = c;
+        continue;
+      }
+      const int s = 1 << (h - 1);
+      std::vector<Candidate> children;
+      for (int di : {0, s})
+        for (int dj : {0, s})
+          if (c.i + di <= lattice_.n() && c.j + dj <= lattice_.n())
+            children.push_back(bounded(c.k, c.i + di, c.j + dj, h - 1));
+      descend(children, h - 1);
+    }
+  }
+  std::optional<Candidate> best_;
+  size_t evaluated_ = 0;
+
+ private:
+  const ScorePyramid& pyramid_;
+  const Lattice& lattice_;
+  int32_t needed_;
+};
+}  // namespace
+
+double objective(const SearchWindow& w, double score, const Eigen::Vector3d& pose)
+{
+  return score - translationCost(w, (pose.head<2>() - w.centre.head<2>()).norm()) -
+         w.cost_per_rad * std::abs(std::remainder(pose.z() - w.centre.z(), 2 * M_PI));
+}
+
+bool excluded(const SearchWindow& w, const Eigen::Vector2d& t)
+{
+  return w.exclude_radius >= 0 && (t - w.exclude_xy).norm() <= w.exclude_radius;
+}
+
+std::vector<double> windowAngles(const SearchWindow& w)
+{
+  std::vector<double> out;
+  if (w.half_theta >= M_PI)
+  {
+    const int count = std::max(1, static_cast<int>(std::ceil(2 * M_PI / w.theta_step - 1e-9)));
+    const double step = 2 * M_PI / count;
+    for (int k = -count / 2; k < count - count / 2; k++) out.push_back(w.centre.z() + k * step);
+    return out;
+  }
+  const int m = static_cast<int>(std::floor(w.half_theta / w.theta_step + 1e-9));
+  for (int k = -m; k <= m; k++) out.push_back(w.centre.z() + k * w.theta_step);
+  return out;
+}
+
+int depthForWindow(double half_xy, double resolution)
+{
+  const int span = 2 * static_cast<int>(std::floor(half_xy / resolution + 1e-9)) + 1;
+  int h = 0;
+  while ((1 << h) < span) h++;
+  return h;
+}
+
+std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
+                                                 const std::vector<Eigen::Vector2d>& points,
+                                                 const SearchWindow& w, double min_score)
+{
+  const ScoreGrid& base = pyramid.levels.front();
+  if (points.empty() || base.cells.empty()) return std::nullopt;
+  const Lattice lattice(base, points, w);
+  const int top = std::min(pyramid.depth(), depthForWindow(w.half_xy, base.resolution));
+  BranchAndBound bnb(pyramid, lattice, threshold(min_score, points.size()));
+  std::vector<Candidate> cands;
+  const int n = lattice.n();
+  for (int k = 0; k < lattice.angleCount(); k++)
+    for (int i = -n; i <= n; i += 1 << top)
+      for (int j = -n; j <= n; j += 1 << top) cands.push_back(bnb.bounded(k, i, j, top));
+  bnb.descend(cands, top);
+  if (!bnb.best_) return std::nullopt;
+  const Candidate& b = *bnb.best_;
+  return lattice.result(b.k, b.i, b.j, b.sum, bnb.evaluated_);
+}
+
+std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,
+                                             const std::vector<Eigen::Vector2d>& points,
+                                             const SearchWindow& w, double min_score)
+{
+  if (points.empty() || grid.cells.empty()) return std::nullopt;
+  const Lattice lattice(grid, points, w);
+  const int32_t needed = threshold(min_score, points.size());
+  std::optional<SearchResult> best;
+  size_t evaluated = 0;
+  for (int k = 0; k < lattice.angleCount(); k++)
+    for (int i = -lattice.n(); i <= lattice.n(); i++)
+      for (int j = -lattice.n(); j <= lattice.n(); j++)
+      {
+        evaluated++;
+        const int32_t sum = lattice.sum(grid, k, i, j);
+        if (sum < needed || lattice.excluded(i, j)) continue;
+        const SearchResult r = lattice.result(k, i, j, sum, 0);
+        if (!best || r.objective > best->objective) best = r;
+      }
+  if (best) best->bounds_evaluated = evaluated;
+  return best;
+}
+
+double scoreAt(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+               const Eigen::Vector3d& pose)
+{
+  if (points.empty()) return 0;
+  const auto cells = rotatedCells(grid, points, pose.z(), pose.head<2>());
+  return sumAt(grid, cells, 0, 0) / (255.0 * points.size());
+}
+
+}  // namespace swslam::correlative

@@ -1,0 +1,267 @@
+// The correlative search: score grid, pyramid and branch and bound against brute force.
+#include <swslam/correlative/search.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using namespace swslam::correlative;
+
+namespace
+{
+std::vector<Eigen::Vector2d> randomPoints(std::mt19937& rng, size_t n, double half)
+{
+  std::uniform_real_distribution<double> U(-half, half);
+  std::vector<Eigen::Vector2d> pts;
+  for (size_t k = 0; k < n; k++) pts.emplace_back(U(rng), U(rng));
+  return pts;
+}
+
+std::vector<Eigen::Vector2d> pointsOf(const test::World& world, const mrpt::poses::CPose2D& pose,
+                                      std::mt19937& rng)
+{
+  return sensor::scanFromObservation(test::simulateObservation(world, pose, 361, M_PI, 30, 0.02, rng)).points;
+}
+
+Eigen::Vector3d vec(const mrpt::poses::CPose2D& p) { return {p.x(), p.y(), p.phi()}; }
+}  // namespace
+
+TEST(CorrelativeGrid, CellsAreTheKernelOfTheNearestPoint)
+{
+  std::mt19937 rng(3);
+  const auto pts = randomPoints(rng, 40, 2.0);
+  const double res = 0.07, sigma = 0.12;
+  const ScoreGrid g = buildScoreGrid(pts, res, sigma, 2);
+  ASSERT_GT(g.width, 0);
+  for (const auto& p : pts) EXPECT_GT(g.at(g.cellOf(p).x(), g.cellOf(p).y()), 0);
+  for (int y = 0; y < g.height; y++)
+    for (int x = 0; x < g.width; x++)
+    {
+      const Eigen::Vector2d centre = g.origin + (Eigen::Vector2d(x, y).array() + 0.5).matrix() * res;
+      double d2 = 1e300;
+      for (const auto& p : pts) d2 = std::min(d2, (centre - p).squaredNorm());
+      const int expected = d2 > 9 * sigma * sigma ? 0 : static_cast<int>(std::lround(255 * std::exp(-d2 / (2 * sigma * sigma))));
+      ASSERT_EQ(g.at(x, y), expected) << "cell " << x << ", " << y;
+    }
+  EXPECT_TRUE(buildScoreGrid({}, res, sigma).cells.empty());
+  EXPECT_THROW(buildScoreGrid(pts, 0, sigma), std::invalid_argument);
+}
+
+TEST(CorrelativeGrid, PyramidLevelsAreWindowMaxima)
+{
+  std::mt19937 rng(5);
+  const ScorePyramid pyr(buildScoreGrid(randomPoints(rng, 30, 1.5), 0.1, 0.1, 7), 3);
+  ASSERT_EQ(pyr.depth(), 3);
+  const ScoreGrid& base = pyr.levels[0];
+  for (int h = 1; h <= 3; h++)
+    for (int y = 0; y < base.height; y++)
+      for (int x = 0; x < base.width; x++)
+      {
+        int m = 0;
+        for (int dy = 0; dy < (1 << h); dy++)
+          for (int dx = 0; dx < (1 << h); dx++) m = std::max(m, base.at(x + dx, y + dy));
+        ASSERT_EQ(pyr.levels[h].at(x, y), m) << "level " << h << " cell " << x << ", " << y;
+      }
+  // Too little padding for the depth: a window could start outside the grid and miss data.
+  EXPECT_THROW(ScorePyramid(buildScoreGrid(randomPoints(rng, 5, 1), 0.1, 0.1, 6), 3), std::invalid_argument);
+}
+
+TEST(CorrelativeGrid, PyramidBoundsHoldWhereFreeSpaceReachesTheGridsEdge)
+{
+  // Free space in the padding (a submap ray whose origin lies beyond the hits): a window
+  // that sticks out of the grid has a partner scoring 0 (ScoreGrid::at), above the free
+  // cells, and its level value must not fall below that, or branch and bound prunes wrongly.
+  std::mt19937 rng(8);
+  ScoreGrid grid = buildScoreGrid(randomPoints(rng, 20, 1.0), 0.1, 0.1, 3);
+  for (auto& c : grid.cells)
+    if (c == 0) c = -255;
+  const ScorePyramid pyr(grid, 2);
+  for (int h = 1; h <= 2; h++)
+    for (int y = 0; y < grid.height; y++)
+      for (int x = 0; x < grid.width; x++)
+      {
+        int m = std::numeric_limits<int>::min();
+        for (int dy = 0; dy < (1 << h); dy++)
+          for (int dx = 0; dx < (1 << h); dx++) m = std::max(m, grid.at(x + dx, y + dy));
+        ASSERT_EQ(pyr.levels[h].at(x, y), m) << "level " << h << " cell " << x << ", " << y;
+      }
+}
+
+TEST(CorrelativeSearch, BranchAndBoundEqualsBruteForce)
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const auto world = test::clutteredWorld(2);
+  for (int trial = 0; trial < 6; trial++)
+  {
+    const mrpt::poses::CPose2D a(2 * U(rng), -2 + U(rng), U(rng));
+    const mrpt::poses::CPose2D motion(1.0 * U(rng), 1.0 * U(rng), 1.2 * U(rng));
+    const auto ref = thinPoints(pointsOf(world, a, rng), 0.1, 20);
+    const auto cur = thinPoints(pointsOf(world, a + motion, rng), 0.1, 20);
+    SearchWindow w;
+    w.half_xy = trial % 2 ? 0.75 : 1.2;
+    w.half_theta = trial % 3 == 0 ? M_PI : 0.6;
+    w.theta_step = 3 * M_PI / 180;
+    w.centre = Eigen::Vector3d(0.3 * U(rng), 0.3 * U(rng), 0.2 * U(rng));
+    // With and without a motion prior (costs in score units per metre and radian).
+    w.cost_per_m = trial < 3 ? 0.0 : 0.1;
+    w.cost_per_rad = trial < 3 ? 0.0 : 0.05 * (trial - 2);
+    w.cost_per_m2 = trial == 2 || trial == 5 ? 0.08 : 0.0;  // the steady-motion prior's quadratic cost
+    const double res = trial % 2 ? 0.1 : 0.15;
+    const int depth = depthForWindow(w.half_xy, res) - trial % 2;  // full and shallower pyramids
+    ScoreGrid grid = buildScoreGrid(ref, res, 0.15, (1 << depth) - 1);
+    if (trial % 2 == 0)  // negative cells too: the reference's free space
+    {
+      std::vector<Ray> rays;
+      for (const auto& p : ref) rays.push_back({Eigen::Vector2d::Zero(), p});
+      markFreeSpace(grid, rays, -200);
+    }
+    const ScorePyramid pyr(std::move(grid), depth);
+    for (double min_score : {0.0, 0.3, 0.99})
+    {
+      const auto fast = searchBranchAndBound(pyr, cur, w, min_score);
+      const auto slow = searchBruteForce(pyr.levels[0], cur, w, min_score);
+      ASSERT_EQ(fast.has_value(), slow.has_value()) << "trial " << trial << " min " << min_score;
+      if (!slow) continue;
+      EXPECT_EQ(fast->objective, slow->objective) << "trial " << trial;
+      EXPECT_GE(fast->score, min_score);
+      EXPECT_NEAR(objective(w, fast->score, fast->pose), fast->objective, 1e-12);
+      EXPECT_LT(fast->bounds_evaluated, slow->bounds_evaluated / 4) << "trial " << trial;
+      // The reported pose is on the lattice and scores what was reported.
+      const Eigen::Vector2d cells = (fast->pose.head<2>() - w.centre.head<2>()) / res;
+      EXPECT_NEAR(cells.x(), std::round(cells.x()), 1e-9);
+      EXPECT_LE(std::abs(cells.x()), w.half_xy / res + 1e-9);
+      EXPECT_NEAR(scoreAt(pyr.levels[0], cur, fast->pose), fast->score, 0.02);
+
+      // The best pose elsewhere (a disc around the best excluded): same in both, outside the
+      // disc, and no better than the best.
+      SearchWindow elsewhere = w;
+      elsewhere.exclude_xy = fast->pose.head<2>();
+      elsewhere.exclude_radius = 0.35;
+      const auto fast2 = searchBranchAndBound(pyr, cur, elsewhere, min_score);
+      const auto slow2 = searchBruteForce(pyr.levels[0], cur, elsewhere, min_score);
+      ASSERT_EQ(fast2.has_value(), slow2.has_value()) << "trial " << trial << " min " << min_score;
+      if (!slow2) continue;
+      EXPECT_EQ(fast2->objective, slow2->objective) << "trial " << trial;
+      EXPECT_GT((fast2->pose.head<2>() - fast->pose.head<2>()).norm(), 0.35);
+      EXPECT_FALSE(excluded(elsewhere, fast2->pose.head<2>()));
+      EXPECT_LE(fast2->objective, fast->objective);
+    }
+  }
+}
+
+TEST(CorrelativeGrid, FreeSpaceMarksTheCellsARayCrossesBeforeItsHit)
+{
+  const double res = 0.1, sigma = 0.1;
+  ScoreGrid g = buildScoreGrid({{2.0, 0.05}}, res, sigma, 30);
+  const ScoreGrid before = g;
+  markFreeSpace(g, {{{0.0, 0.05}, {2.0, 0.05}}}, -255);
+  auto at = [&](const ScoreGrid& grid, double x, double y) {
+    const Eigen::Vector2i c = grid.cellOf({x, y});
+    return grid.at(c.x(), c.y());
+  };
+  for (double x = 0.05; x < 1.65; x += 0.1) EXPECT_EQ(at(g, x, 0.05), -255) << "x " << x;
+  for (double x = 1.75; x < 2.35; x += 0.1)  // within the hit's kernel: unchanged
+    EXPECT_EQ(at(g, x, 0.05), at(before, x, 0.05)) << "x " << x;
+  EXPECT_GT(at(g, 2.0, 0.05), 150);  // the hit's cell: its centre is 0.07 m away
+  EXPECT_EQ(at(g, 2.6, 0.05), 0);   // beyond the hit: unknown
+  EXPECT_EQ(at(g, 1.0, 1.05), 0);   // beside the ray: unknown
+  EXPECT_THROW(markFreeSpace(g, {}, 1), std::invalid_argument);
+}
+
+TEST(CorrelativeSearch, TheMotionPriorPicksTheAlignmentNearestThePrediction)
+{
+  // Two long parallel walls: every shift along them scores the same (a corridor).
+  std::vector<Eigen::Vector2d> ref, cur;
+  for (double x = -10; x <= 10; x += 0.05)
+  {
+    ref.emplace_back(x, 1.0);
+    ref.emplace_back(x, -1.0);
+    if (std::abs(x) < 3)
+    {
+      cur.emplace_back(x, 1.0);
+      cur.emplace_back(x, -1.0);
+    }
+  }
+  SearchWindow w;
+  w.centre = {0.7, 0.0, 0.0};
+  w.half_xy = 1.0;
+  w.half_theta = 0.1;
+  w.theta_step = 0.01;
+  w.cost_per_m = 0.05;
+  w.cost_per_rad = 0.05;
+  const double res = 0.1;
+  const int depth = depthForWindow(w.half_xy, res);
+  const ScorePyramid pyr(buildScoreGrid(ref, res, 0.1, (1 << depth) - 1), depth);
+  const auto r = searchBranchAndBound(pyr, cur, w, 0.5);
+  ASSERT_TRUE(r.has_value());
+  EXPECT_NEAR(r->pose.x(), 0.7, 1e-9);
+  EXPECT_NEAR(r->pose.y(), 0.0, 1e-9);
+  EXPECT_NEAR(r->pose.z(), 0.0, 1e-9);
+  EXPECT_NEAR(r->objective, r->score, 1e-12);  // at the centre: no cost
+}
+
+TEST(CorrelativeSearch, FindsALargeTurnAndShiftFromIdentity)
+{
+  std::mt19937 rng(7);
+  const auto world = test::roomWorld();
+  const mrpt::poses::CPose2D a(-3, 1, 0.4), motion(1.1, -0.9, 80 * M_PI / 180);
+  const auto ref = thinPoints(pointsOf(world, a, rng), 0.05, 30);
+  const auto cur = thinPoints(pointsOf(world, a + motion, rng), 0.05, 30);
+  SearchWindow w;  // identity centre, +-2 m, the whole circle in 1 deg steps
+  const double res = 0.05;
+  const int depth = depthForWindow(w.half_xy, res);
+  const ScorePyramid pyr(buildScoreGrid(ref, res, 0.1, (1 << depth) - 1), depth);
+  const auto r = searchBranchAndBound(pyr, cur, w, 0.3);
+  ASSERT_TRUE(r.has_value());
+  EXPECT_NEAR(r->pose.x(), motion.x(), 0.1);
+  EXPECT_NEAR(r->pose.y(), motion.y(), 0.1);
+  EXPECT_NEAR(std::remainder(r->pose.z() - motion.phi(), 2 * M_PI), 0, 1.5 * M_PI / 180);
+  EXPECT_GT(r->score, scoreAt(pyr.levels[0], cur, Eigen::Vector3d::Zero()) + 0.3);
+  EXPECT_GE(r->score, scoreAt(pyr.levels[0], cur, vec(motion)) - 0.05);
+}
+
+TEST(CorrelativeSearch, WindowAnglesCoverTheCircleOnce)
+{
+  SearchWindow w;
+  w.centre.z() = 0.5;
+  w.theta_step = 7 * M_PI / 180;  // does not divide 360: the step shrinks to 360 / 52
+  const auto full = windowAngles(w);
+  ASSERT_EQ(full.size(), 52u);
+  EXPECT_NEAR(full.back() - full.front(), 2 * M_PI * 51 / 52, 1e-12);
+  w.half_theta = 20 * M_PI / 180;
+  const auto part = windowAngles(w);
+  ASSERT_EQ(part.size(), 5u);
+  EXPECT_NEAR(part.front(), 0.5 - 14 * M_PI / 180, 1e-12);
+  EXPECT_EQ(depthForWindow(2.0, 0.1), 6);  // 41 offsets need a window of 64
+  EXPECT_EQ(depthForWindow(0.0, 0.1), 0);
+}
+
+TEST(CorrelativeSearch, ThinPointsDropsFarAndCrowdedPoints)
+{
+  const std::vector<Eigen::Vector2d> pts = {{1, 0}, {1.02, 0}, {1.2, 0}, {50, 0}, {1.3, 0}};
+  const auto kept = thinPoints(pts, 0.1, 30);
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[1], Eigen::Vector2d(1.2, 0));
+  EXPECT_EQ(kept[2], Eigen::Vector2d(1.3, 0));
+}
+
+TEST(CorrelativeSearch, NothingAboveTheMinimumScoreGivesNoResult)
+{
+  std::mt19937 rng(1);
+  const auto world = test::roomWorld();
+  const auto ref = thinPoints(pointsOf(world, mrpt::poses::CPose2D(0, 0, 0), rng), 0.1, 30);
+  const ScorePyramid pyr(buildScoreGrid(ref, 0.1, 0.1, 1), 1);
+  SearchWindow w;
+  w.half_xy = 0.1;
+  w.half_theta = 0.05;
+  // Points far from every reference point score 0 everywhere in the window.
+  EXPECT_FALSE(searchBranchAndBound(pyr, {{100, 100}, {101, 100}}, w, 0.0).has_value());
+  EXPECT_FALSE(searchBranchAndBound(pyr, {}, w, 0.0).has_value());
+  EXPECT_FALSE(searchBruteForce(pyr.levels[0], {{100, 100}}, w, 0.0).has_value());
+}

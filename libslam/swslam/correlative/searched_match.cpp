@@ -1,0 +1,117 @@
+#include <swslam/correlative/searched_match.h>
+
+#include <swslam/correlative/search.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam::correlative
+{
+using mrpt::poses::CPose2D;
+
+namespace
+{
+Eigen::Vector3d vec(const CPose2D& p) { return {p.x(), p.y(), p.phi()}; }
+double angleDiff(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); }
+}  // namespace
+
+ScorePyramid searchPyramid(const std::vector<Ray>& reference, const CorrelativeParams& p)
+{
+  const int depth = depthForWindow(p.window_xy, p.resolution);
+  std::vector<Eigen::Vector2d> hits;
+  hits.reserve(reference.size());
+  for (const auto& r : reference) hits.push_back(r.hit);
+  auto grid = buildScoreGrid(hits, p.resolution, p.sigma, (1 << depth) - 1);
+  if (p.free_space_score < 0)
+    markFreeSpace(grid, reference, static_cast<int>(std::lround(255 * p.free_space_score)));
+  return ScorePyramid(std::move(grid), depth);
+}
+
+std::vector<Ray> scanRays(const sensor::Scan& scan, double max_range)
+{
+  std::vector<Ray> rays;
+  rays.reserve(scan.points.size());
+  for (const auto& q : scan.points)
+    if (q.norm() <= max_range) rays.push_back({Eigen::Vector2d::Zero(), q});
+  return rays;
+}
+
+SearchWindow searchWindow(const CorrelativeParams& p, const CPose2D& guess)
+{
+  SearchWindow w;
+  w.centre = vec(guess);
+  w.half_xy = p.window_xy;
+  w.half_theta = p.window_theta;
+  w.theta_step = p.theta_step;
+  w.cost_per_m = p.cost_per_m;
+  w.cost_per_rad = p.cost_per_rad;
+  return w;
+}
+
+SearchTrigger searchTrigger(const plicp::MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
+{
+  if (!m.ok() || m.cur_valid_rays == 0) return SearchTrigger::Failed;
+  if ((m.pose.translation() - guess.translation()).norm() > p.trigger_correction_xy ||
+      angleDiff(m.pose.phi(), guess.phi()) > p.trigger_correction_theta)
+    return SearchTrigger::Moved;
+  if (m.inliers < p.trigger_inlier_fraction * m.cur_valid_rays) return SearchTrigger::LowOverlap;
+  return SearchTrigger::None;
+}
+
+bool predictionFailed(const plicp::MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
+{
+  return searchTrigger(m, guess, p) != SearchTrigger::None;
+}
+
+SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScorePyramid& pyramid,
+                             const sensor::Scan& cur, const CPose2D& guess, const plicp::MatchResult& first,
+                             const CorrelativeParams& p, const plicp::PlicpParams& plicp, double cost_per_m2)
+{
+  SearchedMatch out;
+  out.match = first;
+  const auto points = thinPoints(cur.points, p.resolution, p.max_range);
+  const auto& grid = pyramid.levels.front();
+  SearchWindow w = searchWindow(p, guess);
+  w.cost_per_m2 = cost_per_m2;
+  auto objectiveOf = [&](const plicp::MatchResult& m) {
+    return m.ok() ? objective(w, scoreAt(grid, points, vec(m.pose)), vec(m.pose)) : -1e9;
+  };
+  out.first_objective = objectiveOf(first);
+  out.searched_objective = -1e9;
+  const auto best = searchBranchAndBound(pyramid, points, w, p.min_score);
+  if (!best) return out;
+  out.search_objective = best->objective;
+  if (first.ok() && (best->pose.head<2>() - vec(first.pose).head<2>()).norm() < 1.5 * p.resolution &&
+      angleDiff(best->pose.z(), first.pose.phi()) < 1.5 * p.theta_step)
+    return out;
+  const CPose2D search_pose(best->pose.x(), best->pose.y(), best->pose.z());
+  plicp::MatchResult second = plicp::matchScans(reference, cur, search_pose, plicp);
+  out.searched_iterations = second.iterations;
+  out.searched_objective = objectiveOf(second);
+  // PLICP (against the keyframe alone) may leave the search's basin for a pose the grid scores
+  // lower than the search's own: then refine again within a few cells of the search's pose,
+  // and keep the better of the two by the objective.
+  if (p.refine_correspondence_dist > 0 && out.searched_objective < best->objective)
+  {
+    plicp::PlicpParams bounded = plicp;
+    bounded.initial_correspondence_dist = p.refine_correspondence_dist;
+    bounded.max_correspondence_dist = std::min(plicp.max_correspondence_dist, p.refine_correspondence_dist);
+    const plicp::MatchResult local = plicp::matchScans(reference, cur, search_pose, bounded);
+    out.searched_iterations += local.iterations;
+    const double local_objective = objectiveOf(local);
+    out.bounded_refinement = true;
+    if (local_objective > out.searched_objective)
+    {
+      second = local;
+      out.searched_objective = local_objective;
+    }
+  }
+  if (second.ok() && out.searched_objective >= out.first_objective + p.min_score_gain)
+  {
+    out.match = second;
+    out.replaced = true;
+  }
+  return out;
+}
+
+}  // namespace swslam::correlative

@@ -1,0 +1,75 @@
+#pragma once
+// Re-alignment of a tracking match whose prediction failed (doc/tracking.md): a correlative
+// search by branch and bound over a wide window around the prediction, PLICP from its best
+// pose, and the better of the two matches by the search's score.
+
+#include <swslam/correlative/params.h>
+#include <swslam/correlative/score_grid.h>
+#include <swslam/correlative/search.h>
+#include <swslam/plicp/plicp.h>
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <vector>
+
+namespace swslam::correlative
+{
+/** The score pyramid of reference rays (in the reference sensor frame), deep enough for the
+ * search window: the kernels of their hits, and free_space_score on the cells they cross. The
+ * caller leaves out rays longer than max_range. */
+ScorePyramid searchPyramid(const std::vector<Ray>& reference,
+                                        const CorrelativeParams& p);
+
+/** The search window of the parameters (window_xy, window_theta, theta_step, motion prior)
+ * centred on `guess` (a sensor pose in the reference sensor frame). */
+SearchWindow searchWindow(const CorrelativeParams& p, const mrpt::poses::CPose2D& guess);
+
+/** The rays of one scan seen from its own sensor (origin 0), up to max_range: the reference
+ * of a search against that scan alone. */
+std::vector<Ray> scanRays(const sensor::Scan& scan, double max_range);
+
+/** Why a tracking match calls for the search. */
+enum class SearchTrigger
+{
+  None,        ///< the match confirms its prediction
+  Failed,      ///< the match failed
+  Moved,       ///< it moved the guess (sensor frame) by more than trigger_correction_xy or _theta
+  LowOverlap,  ///< it stayed near the guess with fewer than trigger_inlier_fraction of the
+               ///< scan's points as inliers
+};
+SearchTrigger searchTrigger(const plicp::MatchResult& m, const mrpt::poses::CPose2D& guess,
+                            const CorrelativeParams& p);
+
+/** The match's prediction was unreliable: searchTrigger() is not None. */
+bool predictionFailed(const plicp::MatchResult& m, const mrpt::poses::CPose2D& guess,
+                      const CorrelativeParams& p);
+
+struct SearchedMatch
+{
+  plicp::MatchResult match;      ///< the chosen match
+  bool replaced = false;  ///< the match from the search's pose won
+  double first_objective = 0, searched_objective = 0;  ///< both matches' objectives (-1e9: failed or not run)
+  double search_objective = -1e9;  ///< of the search's best pose itself (-1e9: nothing found)
+  bool bounded_refinement = false;  ///< PLICP from the search's pose was run again within refine_correspondence_dist
+  int searched_iterations = 0;      ///< PLICP iterations run from the search's pose, kept or not
+};
+
+/** Searches the window around `guess` (the current sensor pose in the reference sensor
+ * frame, as for matchScans) with the reference's pyramid, runs PLICP from the best pose, and
+ * keeps that match only if its objective (score on the grid less the motion prior's cost) is
+ * min_score_gain above that of `first` (a failed match has none). If the match from the best
+ * pose ends at a lower objective than the best pose's own (PLICP against the keyframe alone
+ * left the search's basin), PLICP runs again from the best pose with refine_correspondence_dist
+ * as its correspondence radius, and the higher-scoring of the two is the searched match.
+ * Nothing found, or a best
+ * pose in the first match's basin (within 1.5 cells and 1.5 angle steps), keeps `first`
+ * without a second match. `cost_per_m2` adds a quadratic translation cost to the window's
+ * motion prior (the steady-motion prior, tracking/steady_motion.h), in the search and in
+ * both objectives. */
+SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference,
+                             const ScorePyramid& pyramid, const sensor::Scan& cur,
+                             const mrpt::poses::CPose2D& guess, const plicp::MatchResult& first,
+                             const CorrelativeParams& p, const plicp::PlicpParams& plicp,
+                             double cost_per_m2 = 0);
+
+}  // namespace swslam::correlative

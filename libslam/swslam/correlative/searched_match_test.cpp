@@ -1,0 +1,146 @@
+// Re-alignment of a tracking match by the correlative search (tracking/searched_match.h).
+#include <swslam/correlative/searched_match.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using namespace swslam::correlative;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** A CARMEN-like scan: 181 beams over 180 deg, 30 m. */
+sensor::Scan scanAt(const test::World& world, const CPose2D& pose, std::mt19937& rng)
+{
+  return sensor::scanFromObservation(test::simulateObservation(world, pose, 181, M_PI, 30, 0.02, rng));
+}
+
+plicp::MatchResult converged(const CPose2D& pose, size_t inliers, size_t rays)
+{
+  plicp::MatchResult m;
+  m.status = plicp::MatchStatus::Converged;
+  m.pose = pose;
+  m.inliers = inliers;
+  m.cur_valid_rays = rays;
+  return m;
+}
+}  // namespace
+
+TEST(SearchedMatch, PredictionFailsOnAFailedMatchFewInliersOrALargeCorrection)
+{
+  correlative::CorrelativeParams p;  // 0.1 m, 2 deg, half the points
+  const CPose2D guess(1, 2, 0.5);
+  EXPECT_FALSE(predictionFailed(converged(guess + CPose2D(0.05, 0.05, 0.02), 60, 100), guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess, 49, 100), guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess + CPose2D(0.0, 0.11, 0.0), 60, 100), guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess + CPose2D(0, 0, 0.04), 60, 100), guess, p));
+  plicp::MatchResult failed = converged(guess, 90, 100);
+  failed.status = plicp::MatchStatus::TooFewCorrespondences;
+  EXPECT_TRUE(predictionFailed(failed, guess, p));
+  EXPECT_TRUE(predictionFailed(converged(guess, 0, 0), guess, p));
+}
+
+TEST(SearchedMatch, TheTriggerSaysWhy)
+{
+  correlative::CorrelativeParams p;
+  const CPose2D guess(1, 2, 0.5);
+  EXPECT_EQ(searchTrigger(converged(guess, 60, 100), guess, p), SearchTrigger::None);
+  EXPECT_EQ(searchTrigger(converged(guess, 49, 100), guess, p), SearchTrigger::LowOverlap);
+  // A match that moved its guess is "moved" whatever its overlap: only a match that stayed
+  // near its guess can be trusted with little overlap (LocalTracker, trust_prediction_after).
+  EXPECT_EQ(searchTrigger(converged(guess + CPose2D(0.2, 0, 0), 10, 100), guess, p), SearchTrigger::Moved);
+  EXPECT_EQ(searchTrigger(converged(guess + CPose2D(0, 0, 0.04), 90, 100), guess, p), SearchTrigger::Moved);
+  plicp::MatchResult failed = converged(guess, 90, 100);
+  failed.status = plicp::MatchStatus::TooFewCorrespondences;
+  EXPECT_EQ(searchTrigger(failed, guess, p), SearchTrigger::Failed);
+}
+
+TEST(SearchedMatch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
+{
+  sensor::Scan s;
+  s.points = {{1, 0}, {0, 5}, {-3, 4}};
+  const auto rays = scanRays(s, 4.5);
+  ASSERT_EQ(rays.size(), 1u);
+  EXPECT_EQ(rays[0].origin, Eigen::Vector2d::Zero());
+  EXPECT_EQ(rays[0].hit, Eigen::Vector2d(1, 0));
+  EXPECT_EQ(scanRays(s, 5.0).size(), 3u);
+}
+
+TEST(SearchedMatch, RecoversALargeUnpredictedMotion)
+{
+  const auto world = test::roomWorld();
+  std::mt19937 rng(4);
+  const CPose2D a(-4, 1, 0.3), motion(1.3, -0.7, 75 * M_PI / 180);
+  const plicp::PlicpParams plicp;
+  const plicp::ReferenceScan ref(scanAt(world, a, rng), plicp);
+  const sensor::Scan cur = scanAt(world, a + motion, rng);
+  const correlative::CorrelativeParams p;
+  const CPose2D guess;  // zero motion: far from the truth
+  const plicp::MatchResult first = plicp::matchScans(ref, cur, guess, plicp);
+  ASSERT_TRUE(predictionFailed(first, guess, p));
+  const auto s = searchAndMatch(ref, searchPyramid(scanRays(ref.scan, p.max_range), p), cur, guess, first, p, plicp);
+  ASSERT_TRUE(s.replaced);
+  ASSERT_TRUE(s.match.ok());
+  EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.05);
+  EXPECT_NEAR(s.match.pose.y(), motion.y(), 0.05);
+  EXPECT_NEAR(std::remainder(s.match.pose.phi() - motion.phi(), 2 * M_PI), 0, 0.01);
+  EXPECT_GE(s.searched_objective, s.first_objective + p.min_score_gain);
+  EXPECT_GE(s.searched_iterations, s.match.iterations);
+}
+
+TEST(SearchedMatch, ARightFirstMatchIsKept)
+{
+  const auto world = test::roomWorld();
+  std::mt19937 rng(5);
+  const CPose2D a(2, -2, -0.4), motion(0.4, 0.1, 0.2);
+  const plicp::PlicpParams plicp;
+  const plicp::ReferenceScan ref(scanAt(world, a, rng), plicp);
+  const sensor::Scan cur = scanAt(world, a + motion, rng);
+  const correlative::CorrelativeParams p;
+  const CPose2D guess = motion + CPose2D(0.15, -0.1, 0.05);
+  const plicp::MatchResult first = plicp::matchScans(ref, cur, guess, plicp);
+  ASSERT_TRUE(first.ok());
+  const auto s = searchAndMatch(ref, searchPyramid(scanRays(ref.scan, p.max_range), p), cur, guess, first, p, plicp);
+  EXPECT_FALSE(s.replaced);
+  EXPECT_EQ(s.match.pose, first.pose);
+  EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.03);
+}
+
+TEST(SearchedMatch, ARefinementThatLeavesTheSearchBasinIsRedoneWithinIt)
+{
+  // PLICP's keyframe disagrees with the score grid (here: the keyframe scan is taken 6 deg off
+  // the pose the grid's scan was taken at), so PLICP from the search's pose ends where the grid
+  // scores lower than the search's pose itself.
+  const auto world = test::roomWorld();
+  std::mt19937 rng(6);
+  const CPose2D a(-3, 0.5, 0.2), motion(1.1, 0.4, 0.5);
+  const plicp::PlicpParams plicp;
+  const sensor::Scan grid_scan = scanAt(world, a, rng);
+  const plicp::ReferenceScan ref(scanAt(world, a + CPose2D(0.1, 0, 6 * M_PI / 180), rng), plicp);
+  const sensor::Scan cur = scanAt(world, a + motion, rng);
+  correlative::CorrelativeParams p;
+  const auto pyramid = searchPyramid(scanRays(grid_scan, p.max_range), p);
+  const CPose2D guess;  // zero motion
+  plicp::MatchResult failed;   // no first match: the searched one is kept if it converges
+  const auto s = searchAndMatch(ref, pyramid, cur, guess, failed, p, plicp);
+  ASSERT_TRUE(s.replaced);
+  ASSERT_TRUE(s.bounded_refinement);
+  EXPECT_GT(s.searched_iterations, s.match.iterations);  // both runs from the search's pose count
+
+  // The same search without the second refinement keeps PLICP's pose, which scores lower.
+  correlative::CorrelativeParams free = p;
+  free.refine_correspondence_dist = 0;
+  const auto f = searchAndMatch(ref, pyramid, cur, guess, failed, free, plicp);
+  ASSERT_TRUE(f.replaced);
+  EXPECT_FALSE(f.bounded_refinement);
+  EXPECT_LT(f.searched_objective, f.search_objective);
+  EXPECT_EQ(s.search_objective, f.search_objective);
+  // Here the bounded refinement scores higher, and is kept.
+  EXPECT_GT(s.searched_objective, f.searched_objective);
+  EXPECT_NE(s.match.pose, f.match.pose);
+}

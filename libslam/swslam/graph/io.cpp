@@ -1,0 +1,193 @@
+#include <swslam/graph/io.h>
+
+#include <swslam/common/atomic_file.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace swslam::graph
+{
+namespace
+{
+struct EdgeRecord
+{
+  size_t line;
+  PoseGraph::TNodeID from, to;
+  mrpt::poses::CPosePDFGaussianInf z;
+  EdgeKind kind;
+};
+
+/** Reads exactly `n` numbers and nothing else; false on any parse error. strtod reads
+ * "nan" and "inf" too, so such values reach validation and become errors, not skips. */
+bool readNumbers(std::istringstream& s, double* v, int n)
+{
+  std::string token;
+  for (int k = 0; k < n; ++k)
+  {
+    if (!(s >> token)) return false;
+    char* end = nullptr;
+    v[k] = std::strtod(token.c_str(), &end);
+    if (end == token.c_str() || *end != '\0') return false;
+  }
+  return !(s >> token);
+}
+
+std::string lineTag(const std::string& source, size_t line)
+{
+  return source + ":" + std::to_string(line) + ": ";
+}
+
+EdgeKind edgeKindOf(const std::string& comment, PoseGraph::TNodeID from, PoseGraph::TNodeID to)
+{
+  const auto at = comment.find("kind=");
+  if (at != std::string::npos)
+  {
+    std::istringstream s(comment.substr(at + 5));
+    std::string name;
+    s >> name;
+    if (const auto kind = edgeKindFromName(name)) return *kind;
+  }
+  return to == from + 1 ? EdgeKind::Consecutive : EdgeKind::Loop;
+}
+}  // namespace
+
+PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport* report)
+{
+  GraphLoadReport rep;
+  PoseGraph graph;
+  std::vector<EdgeRecord> edges;
+  bool have_fix = false;
+  PoseGraph::TNodeID fix_id = 0;
+  size_t fix_line = 0;
+  auto skip = [&](size_t line, const std::string& why) {
+    ++rep.skipped_lines;
+    rep.skipped_line_numbers.push_back(line);
+    rep.skip_reasons.push_back(why);
+  };
+  std::string text;
+  for (size_t line = 1; std::getline(in, text); ++line)
+  {
+    const size_t cut = text.find_first_of("#|");
+    const std::string comment = cut == std::string::npos ? "" : text.substr(cut);
+    std::istringstream s(text.substr(0, cut));
+    std::string key;
+    if (!(s >> key)) continue;  // blank or comment-only
+    const bool g2o_vertex = key == "VERTEX_SE2";
+    const bool toro_vertex = key == "VERTEX2" || key == "VERTEX";
+    const bool g2o_edge = key == "EDGE_SE2";
+    const bool toro_edge = key == "EDGE2" || key == "EDGE";
+    long long id1 = -1, id2 = -1;
+    double v[9];
+    if (g2o_vertex || toro_vertex)
+    {
+      if (!(s >> id1) || id1 < 0 || !readNumbers(s, v, 3))
+      {
+        skip(line, "malformed " + key + " line");
+        continue;
+      }
+      try
+      {
+        graph.addNode(id1, mrpt::poses::CPose2D(v[0], v[1], v[2]));
+      }
+      catch (const std::invalid_argument& e)
+      {
+        throw std::runtime_error(lineTag(source, line) + e.what());
+      }
+    }
+    else if (g2o_edge || toro_edge)
+    {
+      if (!(s >> id1 >> id2) || id1 < 0 || id2 < 0 || !readNumbers(s, v, 9))
+      {
+        skip(line, "malformed " + key + " line");
+        continue;
+      }
+      mrpt::math::CMatrixDouble33 I;
+      if (g2o_edge)  // I11 I12 I13 I22 I23 I33
+        I.asEigen() << v[3], v[4], v[5], v[4], v[6], v[7], v[5], v[7], v[8];
+      else  // TORO: I11 I12 I22 I33 I13 I23
+        I.asEigen() << v[3], v[4], v[7], v[4], v[5], v[8], v[7], v[8], v[6];
+      mrpt::poses::CPosePDFGaussianInf z(mrpt::poses::CPose2D(v[0], v[1], v[2]), I);
+      edges.push_back({line, PoseGraph::TNodeID(id1), PoseGraph::TNodeID(id2), z,
+                       edgeKindOf(comment, id1, id2)});
+    }
+    else if (key == "FIX")
+    {
+      if (!(s >> id1) || id1 < 0) skip(line, "malformed FIX line");
+      else if (have_fix) skip(line, "extra FIX (only the first is the gauge)");
+      else have_fix = true, fix_id = id1, fix_line = line;
+    }
+    else if (key == "EQUIV")
+      skip(line, "EQUIV (node merging) is not supported");
+    else
+      skip(line, "unknown keyword '" + key + "'");
+  }
+  if (graph.nodeCount() == 0) throw std::runtime_error(source + ": no vertex in the file");
+  for (const auto& e : edges)
+  {
+    try
+    {
+      graph.addEdge(e.from, e.to, e.z, e.kind);
+    }
+    catch (const std::invalid_argument& ex)
+    {
+      throw std::runtime_error(lineTag(source, e.line) + ex.what());
+    }
+  }
+  if (have_fix)
+  {
+    if (!graph.hasNode(fix_id))
+      throw std::runtime_error(lineTag(source, fix_line) + "FIX names missing node " +
+                               std::to_string(fix_id));
+    graph.setRoot(fix_id);
+  }
+  rep.vertices = graph.nodeCount();
+  rep.edges = graph.edgeCount();
+  if (report) *report = rep;
+  return graph;
+}
+
+PoseGraph loadGraph(const std::string& path, GraphLoadReport* report)
+{
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open graph file '" + path + "'");
+  return readGraph(in, path, report);
+}
+
+void writeGraph(const PoseGraph& graph, std::ostream& out)
+{
+  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for (const auto id : graph.nodeIds())
+  {
+    const auto& p = graph.pose(id);
+    out << "VERTEX_SE2 " << id << ' ' << p.x() << ' ' << p.y() << ' ' << p.phi() << '\n';
+  }
+  if (graph.nodeCount() > 0) out << "FIX " << graph.root() << '\n';
+  for (size_t k = 0; k < graph.edgeCount(); ++k)
+  {
+    const auto& e = graph.edge(k);
+    const auto& m = e.measurement->mean;
+    const auto& I = e.measurement->cov_inv;
+    out << "EDGE_SE2 " << e.from << ' ' << e.to << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi()
+        << ' ' << I(0, 0) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2)
+        << ' ' << I(2, 2) << " # kind=" << edgeKindName(e.kind) << '\n';
+  }
+}
+
+void saveGraph(const PoseGraph& graph, const std::string& path)
+{
+  common::writeAtomically(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write graph file '" + tmp + "'");
+    writeGraph(graph, out);
+    if (!out) throw std::runtime_error("error writing graph file '" + tmp + "'");
+  });
+}
+
+}  // namespace swslam::graph

@@ -1,0 +1,139 @@
+// Reading and writing pose graphs: g2o and TORO information layouts, round trips, MRPT
+// compatibility, and bad input (skipped lines with their numbers, or errors naming the line).
+#include <swslam/graph/io.h>
+
+#include "test_support.h"
+
+#include <mrpt/graphs/CNetworkOfPoses.h>
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace
+{
+swslam::graph::PoseGraph read(const std::string& text, swslam::graph::GraphLoadReport* rep = nullptr)
+{
+  std::istringstream in(text);
+  return swslam::graph::readGraph(in, "test.graph", rep);
+}
+
+const char* kVertices = "VERTEX2 0 0 0 0\nVERTEX2 1 1 0 0\nVERTEX2 2 2 0 0\n";
+
+std::string errorOf(const std::string& text)
+{
+  try
+  {
+    read(text);
+  }
+  catch (const std::runtime_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(GraphIo, ReadsTheInformationMatrixInG2oAndToroOrder)
+{
+  // The same matrix [[11 12 13] [12 22 23] [13 23 33]] in both layouts.
+  const auto g = read(std::string(kVertices) +
+                      "EDGE_SE2 0 1 1 0 0  11 12 13 22 23 33\n"
+                      "EDGE2    1 2 1 0 0  11 12 22 33 13 23\n");
+  ASSERT_EQ(g.edgeCount(), 2u);
+  for (size_t k = 0; k < 2; ++k)
+  {
+    const auto& I = g.edge(k).measurement->cov_inv;
+    EXPECT_EQ(I(0, 0), 11);
+    EXPECT_EQ(I(0, 1), 12);
+    EXPECT_EQ(I(0, 2), 13);
+    EXPECT_EQ(I(1, 1), 22);
+    EXPECT_EQ(I(1, 2), 23);
+    EXPECT_EQ(I(2, 2), 33);
+    EXPECT_EQ(I(2, 1), 23);
+  }
+}
+
+TEST(GraphIo, MrptSampleGraphLoadsWithPositiveDefiniteInformation)
+{
+  // MRPT's own loader reads these TORO EDGE2 lines in g2o order and gets a singular matrix
+  // (1 0 1 1 0 0 -> I33 = 0); in TORO order the information is the identity.
+  swslam::graph::GraphLoadReport rep;
+  const auto g = swslam::graph::loadGraph(std::string(SWSLAM_MRPT_DATASETS) + "/graph_2d_circle_50nodes.graph", &rep);
+  EXPECT_EQ(rep.vertices, 50u);
+  EXPECT_EQ(rep.edges, 101u);
+  EXPECT_EQ(rep.skipped_lines, 0u);
+  EXPECT_TRUE(g.edge(0).measurement->cov_inv.asEigen().isIdentity());
+  EXPECT_EQ(g.edge(0).kind, swslam::graph::EdgeKind::Consecutive);  // 0 -> 1
+  EXPECT_EQ(g.edge(2).kind, swslam::graph::EdgeKind::Loop);         // 0 -> 25
+}
+
+TEST(GraphIo, RoundTripIsExactAndMrptReadsOurOutput)
+{
+  auto g = read(std::string(kVertices) + "FIX 1\n" +
+                "EDGE_SE2 0 1 1.000000000000001 0.1 -3.1 100 1 2 200 3 50 # kind=dense_neighbour\n"
+                "EDGE_SE2 0 2 2 0.3 0.2 10 0 0 10 0 5\n");
+  g.setPose(2, mrpt::poses::CPose2D(1.0 / 3.0, -2e-17, M_PI - 1e-9));
+  const std::string path = swslam::test::tempDir("graph_io") + "/out.g2o";
+  swslam::graph::saveGraph(g, path);
+  const auto back = swslam::graph::loadGraph(path);
+  EXPECT_EQ(back.root(), 1u);
+  ASSERT_EQ(back.edgeCount(), 2u);
+  EXPECT_EQ(back.edge(0).kind, swslam::graph::EdgeKind::DenseNeighbour);
+  EXPECT_EQ(back.edge(1).kind, swslam::graph::EdgeKind::Loop);
+  for (const auto id : g.nodeIds())
+  {
+    EXPECT_EQ(back.pose(id).x(), g.pose(id).x());
+    EXPECT_EQ(back.pose(id).y(), g.pose(id).y());
+    EXPECT_EQ(back.pose(id).phi(), g.pose(id).phi());
+  }
+  for (size_t k = 0; k < 2; ++k)
+  {
+    EXPECT_EQ(back.edge(k).measurement->mean.x(), g.edge(k).measurement->mean.x());
+    EXPECT_EQ(back.edge(k).measurement->cov_inv, g.edge(k).measurement->cov_inv);
+  }
+  mrpt::graphs::CNetworkOfPoses2DInf mrpt_graph;
+  mrpt_graph.loadFromTextFile(path);
+  EXPECT_EQ(mrpt_graph.nodeCount(), 3u);
+  EXPECT_EQ(mrpt_graph.edgeCount(), 2u);
+  EXPECT_EQ(mrpt_graph.edges.begin()->second.cov_inv(1, 2), 3);
+}
+
+TEST(GraphIo, GarbageLinesAreSkippedWithTheirLineNumbers)
+{
+  swslam::graph::GraphLoadReport rep;
+  const auto g = read(std::string(kVertices) +      // lines 1-3
+                          "# a comment\n"           // 4: not counted
+                          "hello world\n"           // 5
+                          "EDGE2 0 1 1 0\n"         // 6: too few fields
+                          "EDGE2 0 1 1 0 0 1 0 1 1 0 0 extra\n"  // 7: too many
+                          "EQUIV 1 2\n"             // 8
+                          "VERTEX2 x 1 2 3\n"       // 9
+                          "EDGE2 0 1 1 0 0 1 0 1 1 0 0\n",  // 10: good
+                      &rep);
+  EXPECT_EQ(g.nodeCount(), 3u);
+  EXPECT_EQ(g.edgeCount(), 1u);
+  EXPECT_EQ(rep.skipped_lines, 5u);
+  EXPECT_EQ(rep.skipped_line_numbers, (std::vector<size_t>{5, 6, 7, 8, 9}));
+  EXPECT_NE(rep.skip_reasons[0].find("hello"), std::string::npos);
+}
+
+TEST(GraphIo, BadRecordsAreErrorsNamingTheLine)
+{
+  const std::string v = kVertices;
+  EXPECT_NE(errorOf(v + "EDGE2 0 7 1 0 0 1 0 1 1 0 0\n").find("test.graph:4: edge 0 -> 7: missing node 7"),
+            std::string::npos);
+  EXPECT_NE(errorOf(v + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 0\n").find("not positive definite"),
+            std::string::npos);
+  EXPECT_NE(errorOf(v + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 -2\n").find("not positive definite"),
+            std::string::npos);
+  EXPECT_NE(errorOf(v + "EDGE_SE2 0 1 nan 0 0 1 0 0 1 0 1\n").find("not finite"), std::string::npos);
+  EXPECT_NE(errorOf(v + "VERTEX2 3 nan 0 0\n").find("test.graph:4: node 3: pose is not finite"),
+            std::string::npos);
+  EXPECT_NE(errorOf(v + "VERTEX2 2 0 0 0\n").find("duplicate"), std::string::npos);
+  EXPECT_NE(errorOf(v + "EDGE2 1 1 1 0 0 1 0 1 1 0 0\n").find("two different nodes"),
+            std::string::npos);
+  EXPECT_NE(errorOf(v + "FIX 9\n").find("FIX names missing node 9"), std::string::npos);
+  EXPECT_NE(errorOf("garbage only\n").find("no vertex"), std::string::npos);
+  EXPECT_THROW(swslam::graph::loadGraph("/nonexistent/x.graph"), std::runtime_error);
+}

@@ -1,0 +1,146 @@
+#include <swslam/graph/normal_equations.h>
+
+#include <swslam/graph/block_amd_ordering.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam::graph
+{
+NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs)
+    : position_(amdBlockOrder(free_blocks, pairs)),  // checks the pairs
+      H_(3 * free_blocks, 3 * free_blocks),
+      g_(Eigen::VectorXd::Zero(3 * free_blocks)),
+      rhs_(3 * free_blocks)
+{
+  // The upper triangle's pattern, in stored block order, written straight into compressed
+  // storage: per block column B, full blocks at the rows of its coupled blocks A < B in
+  // increasing order, then the upper half of the diagonal block.
+  std::vector<std::vector<int>> above(static_cast<size_t>(free_blocks));
+  for (const auto& [a, b] : pairs)
+  {
+    if (a == b) continue;
+    const int pa = position_[static_cast<size_t>(a)], pb = position_[static_cast<size_t>(b)];
+    above[static_cast<size_t>(std::max(pa, pb))].push_back(std::min(pa, pb));
+  }
+  Eigen::Index nnz = 0;
+  for (auto& rows : above)
+  {
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    nnz += 6 + 9 * static_cast<Eigen::Index>(rows.size());
+  }
+  H_.resizeNonZeros(nnz);
+  int* outer = H_.outerIndexPtr();
+  int* inner = H_.innerIndexPtr();
+  int s = 0;
+  for (int B = 0; B < free_blocks; ++B)
+    for (int c = 0; c < 3; ++c)
+    {
+      outer[3 * B + c] = s;
+      for (const int A : above[static_cast<size_t>(B)])
+        for (int r = 0; r < 3; ++r) inner[s++] = 3 * A + r;
+      for (int r = 0; r <= c; ++r) inner[s++] = 3 * B + r;
+    }
+  outer[3 * free_blocks] = s;
+  std::fill(H_.valuePtr(), H_.valuePtr() + nnz, 0.0);
+  diagonal_slots_.resize(g_.size());
+  for (int a = 0; a < free_blocks; ++a)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = 3 * position_[static_cast<size_t>(a)] + k;
+      diagonal_slots_[3 * a + k] = slot(i, i);
+    }
+  damped_ = H_;
+  simplicial_.analyzePattern(damped_);
+  const double fill = simplicial_.factorNonZeros() / std::max<Eigen::Index>(1, g_.size());
+  if (g_.size() >= kCholmodMinDimension && fill > kCholmodMinFillPerColumn)
+  {
+    // A dense factor (an area revisited over and over): CHOLMOD's supernodal Cholesky.
+    use_cholmod_ = true;
+    cholmod_.analyzePattern(damped_);
+  }
+}
+
+int NormalEquations::slot(int row, int col) const
+{
+  const int* begin = H_.innerIndexPtr() + H_.outerIndexPtr()[col];
+  const int* end = H_.innerIndexPtr() + H_.outerIndexPtr()[col + 1];
+  return static_cast<int>(std::lower_bound(begin, end, row) - H_.innerIndexPtr());
+}
+
+void NormalEquations::setZero()
+{
+  std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.0);
+  g_.setZero();
+}
+
+void NormalEquations::addStoredBlock(int row_block, int col_block, const Eigen::Matrix3d& block)
+{
+  // Within a column the rows of a block are contiguous in the compressed storage; a diagonal
+  // block keeps its upper half.
+  double* values = H_.valuePtr();
+  for (int c = 0; c < 3; ++c)
+  {
+    const int col = 3 * col_block + c;
+    const int last_row = row_block == col_block ? c : 2;
+    int s = slot(3 * row_block, col);
+    for (int r = 0; r <= last_row; ++r) values[s++] += block(r, c);
+  }
+}
+
+void NormalEquations::addDiagonal(int a, const Eigen::Matrix3d& block)
+{
+  const int p = position_[static_cast<size_t>(a)];
+  addStoredBlock(p, p, block);
+}
+
+void NormalEquations::addOffDiagonal(int a, int b, const Eigen::Matrix3d& block)
+{
+  const int pa = position_[static_cast<size_t>(a)], pb = position_[static_cast<size_t>(b)];
+  if (pa < pb) addStoredBlock(pa, pb, block);
+  else addStoredBlock(pb, pa, block.transpose());
+}
+
+bool NormalEquations::solveDamped(double lambda, Eigen::VectorXd& dx)
+{
+  std::copy(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), damped_.valuePtr());
+  for (int i = 0; i < g_.size(); ++i)
+  {
+    // Marquardt scaling, floored so that a zero-curvature direction is still damped.
+    const double d = std::max(H_.valuePtr()[diagonal_slots_[i]], 1e-12);
+    damped_.valuePtr()[diagonal_slots_[i]] += lambda * d;
+  }
+  const int blocks = static_cast<int>(position_.size());
+  for (int a = 0; a < blocks; ++a) rhs_.segment<3>(3 * position_[a]) = -g_.segment<3>(3 * a);
+  Eigen::VectorXd stored;
+  bool ok = false;
+  if (use_cholmod_)
+  {
+    cholmod_.factorize(damped_);
+    ok = cholmod_.info() == Eigen::Success;
+    if (ok) stored = cholmod_.solve(rhs_);
+    ok = ok && cholmod_.info() == Eigen::Success;
+  }
+  else
+  {
+    simplicial_.factorize(damped_);
+    ok = simplicial_.info() == Eigen::Success;
+    if (ok) stored = simplicial_.solve(rhs_);
+    ok = ok && simplicial_.info() == Eigen::Success;
+  }
+  if (!ok) return false;
+  dx.resize(g_.size());
+  for (int a = 0; a < blocks; ++a) dx.segment<3>(3 * a) = stored.segment<3>(3 * position_[a]);
+  return dx.allFinite();
+}
+
+double NormalEquations::predictedDecrease(double lambda, const Eigen::VectorXd& dx) const
+{
+  double s = -dx.dot(g_);
+  for (int i = 0; i < g_.size(); ++i)
+    s += lambda * std::max(H_.valuePtr()[diagonal_slots_[i]], 1e-12) * dx[i] * dx[i];
+  return 0.5 * s;
+}
+
+}  // namespace swslam::graph

@@ -1,0 +1,76 @@
+#pragma once
+// Sparse normal equations H dx = -g of a pose graph, stored in 3x3 blocks: the pattern is
+// built once per problem, then each linearization only adds into fixed value slots, and
+// each damped solve reuses the symbolic factorization. The blocks are stored in a
+// fill-reducing order (AMD on the graph of the blocks, block_amd_ordering.h), so that the
+// factorization works on H as stored, with no permuted copy per solve. Eigen's simplicial
+// LDL^T is used while its factor stays sparse, as along a trajectory with few loops; when
+// the factor is dense (an area revisited over and over), CHOLMOD's supernodal Cholesky
+// takes over, measurably faster there (doc/graph-optimization.md).
+
+#include <Eigen/Core>
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <utility>
+#include <vector>
+
+namespace swslam::graph
+{
+class NormalEquations
+{
+ public:
+  /** `free_blocks` variables of 3 dofs each; `pairs` lists the (a, b) block pairs, a != b,
+   * that edges couple (duplicates and either order allowed; a == b adds nothing). Edges
+   * touching one free variable only need the diagonal block, always present. Throws
+   * std::invalid_argument for a block index outside [0, free_blocks). */
+  NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs);
+
+  void setZero();
+  /** H_aa += block (a symmetric block). */
+  void addDiagonal(int a, const Eigen::Matrix3d& block);
+  /** H_ab += block (and H_ba += block^T implicitly: one triangle is stored). */
+  void addOffDiagonal(int a, int b, const Eigen::Matrix3d& block);
+  /** g, in the variables' own order (as dx). */
+  Eigen::VectorXd& gradient() { return g_; }
+
+  /** Solves (H + lambda diag(H)) dx = -g. Returns false if the factorization fails. */
+  bool solveDamped(double lambda, Eigen::VectorXd& dx);
+  /** dx^T (lambda diag(H) dx - g) / 2: the decrease the damped model predicts. */
+  double predictedDecrease(double lambda, const Eigen::VectorXd& dx) const;
+
+  int dimension() const { return static_cast<int>(g_.size()); }
+  /** True if the supernodal CHOLMOD factorization is used. */
+  bool usesCholmod() const { return use_cholmod_; }
+
+  /** CHOLMOD is used for systems of at least this many unknowns whose factor holds more
+   * than kCholmodMinFillPerColumn non-zeros per column (decided by the symbolic analysis). */
+  static constexpr int kCholmodMinDimension = 300;
+  static constexpr double kCholmodMinFillPerColumn = 40.0;
+
+ private:
+  int slot(int row, int col) const;  // index into H_.valuePtr() of (row, col), row <= col
+  /** H_{row_block, col_block} += block, in stored (ordered) block indices, row <= col. */
+  void addStoredBlock(int row_block, int col_block, const Eigen::Matrix3d& block);
+
+  std::vector<int> position_;        // per variable block, its block in H_ (AMD order)
+  Eigen::SparseMatrix<double> H_;    // upper triangle incl. the diagonal blocks', ordered
+  Eigen::SparseMatrix<double> damped_;
+  std::vector<int> diagonal_slots_;  // per scalar variable (own order), slot of its H(i, i)
+  Eigen::VectorXd g_;                // own order
+  Eigen::VectorXd rhs_;              // -g in stored order
+  /** Simplicial LDL^T on H as stored, that tells the size of its factor right after the
+   * symbolic analysis. */
+  struct SimplicialSolver
+      : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
+  {
+    double factorNonZeros() const { return m_nonZerosPerCol.cast<double>().sum(); }
+  };
+
+  bool use_cholmod_ = false;
+  SimplicialSolver simplicial_;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Upper> cholmod_;
+};
+
+}  // namespace swslam::graph

@@ -1,0 +1,63 @@
+#pragma once
+// Levenberg-Marquardt with iteratively reweighted least squares (paper eq. 11-13) over a
+// pose-graph problem given as plain values: poses, which of them are held fixed, and
+// relative-pose edges with information matrices. The normal equations are sparse (3x3
+// blocks) and solved by Eigen's simplicial LDL^T with AMD ordering.
+
+#include <swslam/graph/optimizer_params.h>
+#include <swslam/geometry/se2_error.h>
+
+#include <string>
+#include <vector>
+
+namespace swslam::graph
+{
+struct GraphProblem
+{
+  struct Edge
+  {
+    int i = 0, j = 0;              ///< indices into poses
+    geometry::Pose2 z = geometry::Pose2::Zero();       ///< pose of j seen from i
+    Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
+    bool robust = false;           ///< weighted by the Barron kernel
+  };
+  std::vector<geometry::Pose2> poses;
+  std::vector<char> fixed;  ///< per pose; if none is fixed, pose 0 is held as the gauge
+  std::vector<Edge> edges;
+};
+
+enum class OptimizationStatus
+{
+  Converged,          ///< a tolerance was met (or the damping grew past lm_max_lambda)
+  MaxIterations,      ///< stopped after max_iterations linear solves
+  NothingToOptimize,  ///< no free pose or no edge: poses unchanged
+  Diverged            ///< non-finite cost or failed solve: poses left as they were
+};
+const char* statusName(OptimizationStatus s);
+
+struct OptimizationReport
+{
+  OptimizationStatus status = OptimizationStatus::NothingToOptimize;
+  size_t iterations = 0;        ///< linear solves (accepted and rejected LM steps)
+  size_t accepted_steps = 0;
+  double initial_chi2 = 0;      ///< sum of e^T Omega e over the problem's edges
+  double final_chi2 = 0;
+  double initial_cost = 0;      ///< robust cost: sum of c^2 rho(r) (robust) or r^2/2 (others)
+  double final_cost = 0;
+  double active_sq_residuals = 0;  ///< sum of w r^2 at the result (eq. 11; paper Fig. 7)
+  double time_s = 0;
+  size_t free_nodes = 0, fixed_nodes = 0, edges = 0;
+  std::string message;          ///< why it stopped, in words
+};
+
+/** chi2 = sum over edges of e^T Omega e at the problem's poses. */
+double graphChi2(const GraphProblem& problem);
+
+/** Throws std::invalid_argument if an edge names a pose out of range or joins a pose to
+ * itself, or the per-pose vectors differ in size. */
+void checkProblem(const GraphProblem& problem);
+
+/** Optimizes problem.poses in place. On Diverged the poses are left exactly as given. */
+OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params);
+
+}  // namespace swslam::graph

@@ -1,0 +1,133 @@
+#include <swslam/graph/pose_graph.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace swslam::graph
+{
+namespace
+{
+
+bool finitePose(const mrpt::poses::CPose2D& p)
+{
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.phi());
+}
+
+std::string nodeName(PoseGraph::TNodeID id) { return "node " + std::to_string(id); }
+}  // namespace
+
+void checkInformationMatrix(const mrpt::math::CMatrixDouble33& info, const std::string& what)
+{
+  const Eigen::Matrix3d m = info.asEigen();
+  if (!m.allFinite()) throw std::invalid_argument(what + ": information matrix is not finite");
+  const double scale = std::max(1.0, m.cwiseAbs().maxCoeff());
+  if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
+    throw std::invalid_argument(what + ": information matrix is not symmetric");
+  Eigen::LLT<Eigen::Matrix3d> llt(m);
+  if (llt.info() != Eigen::Success)
+    throw std::invalid_argument(what + ": information matrix is not positive definite");
+}
+
+PoseGraph::PoseGraph(const PoseGraph& other)
+    : net_(other.net_), edges_(other.edges_), adjacency_(other.adjacency_)
+{
+  relinkEdges(other);
+}
+
+PoseGraph& PoseGraph::operator=(const PoseGraph& other)
+{
+  if (this != &other)
+  {
+    net_ = other.net_;
+    edges_ = other.edges_;
+    adjacency_ = other.adjacency_;
+    relinkEdges(other);
+  }
+  return *this;
+}
+
+void PoseGraph::relinkEdges(const PoseGraph& other)
+{
+  // A copied multimap keeps the order of its elements: walk both in step.
+  std::unordered_map<const mrpt::poses::CPosePDFGaussianInf*, const mrpt::poses::CPosePDFGaussianInf*>
+      moved;
+  moved.reserve(edges_.size());
+  auto mine = net_.edges.begin();
+  for (auto theirs = other.net_.edges.begin(); theirs != other.net_.edges.end(); ++theirs, ++mine)
+    moved[&theirs->second] = &mine->second;
+  for (auto& e : edges_) e.measurement = moved.at(e.measurement);
+}
+
+void PoseGraph::addNode(TNodeID id, const mrpt::poses::CPose2D& pose)
+{
+  if (!finitePose(pose)) throw std::invalid_argument(nodeName(id) + ": pose is not finite");
+  if (hasNode(id)) throw std::invalid_argument(nodeName(id) + ": duplicate node id");
+  if (net_.nodes.empty()) net_.root = id;
+  net_.nodes[id] = pose;
+  adjacency_[id];
+}
+
+size_t PoseGraph::addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
+                          EdgeKind kind)
+{
+  const std::string what = "edge " + std::to_string(from) + " -> " + std::to_string(to);
+  if (!hasNode(from)) throw std::invalid_argument(what + ": missing " + nodeName(from));
+  if (!hasNode(to)) throw std::invalid_argument(what + ": missing " + nodeName(to));
+  if (from == to) throw std::invalid_argument(what + ": an edge must join two different nodes");
+  if (!finitePose(z.mean)) throw std::invalid_argument(what + ": measurement is not finite");
+  checkInformationMatrix(z.cov_inv, what);
+  const auto it = net_.edges.emplace(std::make_pair(from, to), z);
+  edges_.push_back(Edge{from, to, kind, &it->second});
+  adjacency_[from].push_back(edges_.size() - 1);
+  adjacency_[to].push_back(edges_.size() - 1);
+  return edges_.size() - 1;
+}
+
+const mrpt::poses::CPose2D& PoseGraph::pose(TNodeID id) const
+{
+  const auto it = net_.nodes.find(id);
+  if (it == net_.nodes.end()) throw std::invalid_argument(nodeName(id) + ": no such node");
+  return it->second;
+}
+
+void PoseGraph::setPose(TNodeID id, const mrpt::poses::CPose2D& pose)
+{
+  const auto it = net_.nodes.find(id);
+  if (it == net_.nodes.end()) throw std::invalid_argument(nodeName(id) + ": no such node");
+  if (!finitePose(pose)) throw std::invalid_argument(nodeName(id) + ": pose is not finite");
+  it->second = pose;
+}
+
+const std::vector<size_t>& PoseGraph::edgesOf(TNodeID id) const
+{
+  const auto it = adjacency_.find(id);
+  if (it == adjacency_.end()) throw std::invalid_argument(nodeName(id) + ": no such node");
+  return it->second;
+}
+
+void PoseGraph::setRoot(TNodeID id)
+{
+  if (!hasNode(id)) throw std::invalid_argument("root: missing " + nodeName(id));
+  net_.root = id;
+}
+
+std::vector<PoseGraph::TNodeID> PoseGraph::newestNodes(size_t n) const
+{
+  std::vector<TNodeID> ids;
+  for (auto it = net_.nodes.rbegin(); it != net_.nodes.rend() && ids.size() < n; ++it)
+    ids.push_back(it->first);
+  return {ids.rbegin(), ids.rend()};
+}
+
+std::vector<PoseGraph::TNodeID> PoseGraph::nodeIds() const
+{
+  std::vector<TNodeID> ids;
+  ids.reserve(net_.nodes.size());
+  for (const auto& n : net_.nodes) ids.push_back(n.first);
+  return ids;
+}
+
+}  // namespace swslam::graph

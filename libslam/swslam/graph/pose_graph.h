@@ -1,0 +1,84 @@
+#pragma once
+// The pose graph: a thin wrapper around mrpt::graphs::CNetworkOfPoses2DInf that adds, per
+// edge, the kind of constraint (which decides whether it is robustified) and, per node,
+// the list of its edges, so that a window of nodes finds its edges without scanning the
+// whole graph. Every pose and edge is validated on insertion.
+
+#include <swslam/graph/edge_kind.h>
+
+#include <mrpt/graphs/CNetworkOfPoses.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPosePDFGaussianInf.h>
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace swslam::graph
+{
+class PoseGraph
+{
+ public:
+  using TNodeID = mrpt::graphs::TNodeID;
+  using Network = mrpt::graphs::CNetworkOfPoses2DInf;
+
+  struct Edge
+  {
+    TNodeID from, to;
+    EdgeKind kind;
+    const mrpt::poses::CPosePDFGaussianInf* measurement;  ///< pose of `to` seen from `from`
+  };
+
+  PoseGraph() = default;
+  PoseGraph(const PoseGraph& other);
+  PoseGraph& operator=(const PoseGraph& other);
+  PoseGraph(PoseGraph&&) = default;  // multimap nodes move with their addresses
+  PoseGraph& operator=(PoseGraph&&) = default;
+
+  /** Adds a node; throws std::invalid_argument on a non-finite pose or a duplicate id.
+   * The first node added becomes the root (the gauge of full optimizations). */
+  void addNode(TNodeID id, const mrpt::poses::CPose2D& pose);
+
+  /** Adds an edge and returns its index; throws std::invalid_argument naming the problem
+   * if a node is missing, from == to, the mean is not finite, or the information matrix
+   * is not finite, not symmetric or not positive definite. */
+  size_t addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
+                 EdgeKind kind);
+
+  bool hasNode(TNodeID id) const { return adjacency_.count(id) != 0; }
+  const mrpt::poses::CPose2D& pose(TNodeID id) const;
+  /** Throws std::invalid_argument for a missing node or a non-finite pose. */
+  void setPose(TNodeID id, const mrpt::poses::CPose2D& pose);
+
+  size_t nodeCount() const { return net_.nodes.size(); }
+  size_t edgeCount() const { return edges_.size(); }
+  const Edge& edge(size_t index) const { return edges_.at(index); }
+  /** Indices of the edges touching node `id` (both directions). */
+  const std::vector<size_t>& edgesOf(TNodeID id) const;
+
+  TNodeID root() const { return net_.root; }
+  void setRoot(TNodeID id);
+
+  /** The newest `n` node ids (highest ids), oldest first. */
+  std::vector<TNodeID> newestNodes(size_t n) const;
+  /** All node ids in increasing order. */
+  std::vector<TNodeID> nodeIds() const;
+
+  /** The underlying MRPT graph (for MRPT's tools: its optimizer, viewers, I/O). */
+  const Network& network() const { return net_; }
+
+ private:
+  /** After copying `other`, points edges_ at this graph's own measurements. */
+  void relinkEdges(const PoseGraph& other);
+
+  Network net_;
+  std::vector<Edge> edges_;
+  std::unordered_map<TNodeID, std::vector<size_t>> adjacency_;
+};
+
+/** Throws std::invalid_argument(`what` + reason) unless `info` is finite, symmetric and
+ * positive definite. */
+void checkInformationMatrix(const mrpt::math::CMatrixDouble33& info, const std::string& what);
+
+}  // namespace swslam::graph

@@ -1,0 +1,95 @@
+#include <swslam/io/carmen2rawlog.h>
+
+#include <swslam/common/atomic_file.h>
+#include <swslam/common/tum_io.h>
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace swslam::io
+{
+CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::WarningSink warn)
+{
+  if (opts.compress_level < 0 || opts.compress_level > 9)
+    throw std::invalid_argument("carmen2rawlog: compress level must be in 0..9, got " +
+                                std::to_string(opts.compress_level));
+  // The log's ODOM lines would mix with the reference odometry, and a reading stamped before
+  // the previous one is dropped by a reader (the motion then comes out wrong).
+  if (opts.reference_odometry && (!opts.params.laser_only || !opts.params.repair_timestamps))
+    throw std::invalid_argument(
+        "carmen2rawlog: reference odometry needs laser-only conversion with repaired timestamps "
+        "(--laser-only --repair-timestamps)");
+  CarmenLogReader reader(opts.input, opts.params, std::move(warn));
+  std::vector<common::StampedPose> reference;
+  common::writeAtomically(opts.output, [&](const std::string& tmp) {
+    mrpt::io::CFileGZOutputStream out;
+    if (!out.open(tmp, opts.compress_level))
+      throw std::runtime_error("carmen2rawlog: cannot write '" + tmp + "'");
+    auto archive = mrpt::serialization::archiveFrom(out);
+    CarmenRecord rec;
+    while (reader.next(rec))
+    {
+      if (opts.reference_odometry && rec.reference_pose)  // only scans carry one
+      {
+        mrpt::obs::CObservationOdometry odometry;
+        odometry.sensorLabel = "REFERENCE_ODOMETRY";
+        odometry.timestamp = rec.observation->timestamp;
+        odometry.odometry = *rec.reference_pose;
+        archive << odometry;
+      }
+      archive << *rec.observation;
+      if (rec.reference_pose) reference.push_back({rec.timestamp, *rec.reference_pose});
+    }
+    if (reader.stats().scans() == 0)
+      throw std::runtime_error("carmen2rawlog: no laser scan in '" + opts.input +
+                               "' (is it a CARMEN log?)");
+  });
+  if (!opts.ground_truth.empty()) common::writeTum(opts.ground_truth, reference);
+  return reader.stats();
+}
+
+std::string formatCarmenStats(const CarmenStats& s)
+{
+  std::ostringstream o;
+  o << "scans: " << s.scans() << "\n";
+  for (const auto& [label, l] : s.lasers)
+  {
+    o << "  " << label << ": " << l.scans << " scans, beams " << l.min_beams;
+    if (l.max_beams != l.min_beams) o << ".." << l.max_beams;
+    o << ", aperture " << l.aperture * 180 / M_PI << " deg, max_range " << l.max_range
+      << " m (" << l.max_range_source << "), invalid rays " << l.invalid_rays << " of "
+      << l.rays << "\n";
+  }
+  o << "odometry: " << s.odometry;
+  if (s.odometry_dropped) o << " (" << s.odometry_dropped << " ODOM lines dropped: laser only)";
+  o << "\nPARAM lines: " << s.params << "\n";
+  o << "malformed lines: " << s.malformed;
+  if (s.malformed) o << " (first at line " << s.first_malformed_line << ")";
+  o << "\n";
+  for (const auto& [msg, n] : s.unknown_messages)
+    o << "skipped " << msg << " lines: " << n << " (message type not converted)\n";
+  o << "timestamp problems: " << s.timestampProblems() << "\n";
+  for (const auto& [stream, t] : s.timestamps)
+  {
+    o << "  ";
+    o << stream << ": " << t.count << " stamps, " << t.non_increasing << " non-increasing, "
+      << t.forward_jumps << " forward jumps";
+    if (t.negative) o << ", " << t.negative << " negative (written as 0)";
+    if (s.repairing)
+      o << "; repaired " << t.repaired << " (period " << t.repair_period << " s)";
+    else if (t.non_increasing + t.forward_jumps > 0)
+      o << "; kept as logged (use --repair-timestamps)";
+    o << "\n";
+  }
+  if (s.timestamp_offset != 0)
+    o << "laser timestamps negative: all timestamps shifted by +" << s.timestamp_offset
+      << " s (negative times are not representable in MRPT)\n";
+  if (s.geometry_warnings) o << "geometry warnings: " << s.geometry_warnings << "\n";
+  return o.str();
+}
+
+}  // namespace swslam::io

@@ -1,0 +1,248 @@
+#include <swslam/io/carmen_log.h>
+
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+namespace swslam::io
+{
+CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& params,
+                                 WarningSink warn)
+    : path_(path), params_(params), warn_(std::move(warn))
+{
+  stats_.repairing = params_.repair_timestamps;
+  params_.check();
+  if (!warn_) warn_ = [](const std::string& m) { std::cerr << "warning: " << m << "\n"; };
+  prescan();
+  open();
+}
+
+void CarmenLogReader::open()
+{
+  bool ok = false;
+  try
+  {
+    ok = std::filesystem::is_regular_file(path_) && file_.open(path_);
+  }
+  catch (const std::exception&)
+  {
+  }
+  if (!ok) throw std::runtime_error("carmen: cannot open '" + path_ + "'");
+  buffer_.clear();
+  buffer_pos_ = 0;
+  eof_ = false;
+  line_no_ = 0;
+}
+
+bool CarmenLogReader::nextLine(std::string& line)
+{
+  line.clear();
+  for (;;)
+  {
+    const size_t nl = buffer_.find('\n', buffer_pos_);
+    if (nl != std::string::npos)
+    {
+      line.append(buffer_, buffer_pos_, nl - buffer_pos_);
+      buffer_pos_ = nl + 1;
+      line_no_++;
+      return true;
+    }
+    line.append(buffer_, buffer_pos_, std::string::npos);
+    buffer_.resize(1 << 16);
+    const size_t got = eof_ ? 0 : file_.Read(buffer_.data(), buffer_.size());
+    buffer_.resize(got);
+    buffer_pos_ = 0;
+    if (got == 0)
+    {
+      eof_ = true;
+      if (line.empty()) return false;
+      line_no_++;  // last line without '\n'
+      return true;
+    }
+  }
+}
+
+void CarmenLogReader::prescan()
+{
+  // First pass: each laser's readings (saturation) and each stream's timestamps (repair
+  // period). Malformed lines are skipped silently here; the second pass reports them.
+  open();
+  std::map<std::string, SaturationDetector> detectors;
+  std::map<std::string, std::vector<double>> times;
+  std::string text;
+  while (nextLine(text))
+  {
+    CarmenLine line;
+    try
+    {
+      line = parseCarmenLine(text);
+    }
+    catch (const CarmenLineError&)
+    {
+      continue;
+    }
+    if (line.kind == CarmenLine::Kind::Odometry && !params_.laser_only)
+      times["ODOM"].push_back(line.odometry.timestamp);
+    if (line.kind != CarmenLine::Kind::Laser) continue;
+    const auto& laser = line.laser;
+    times[laser.label].push_back(laser.timestamp);
+    auto it = detectors.try_emplace(laser.label, params_.saturation_rel_tol,
+                                    params_.saturation_min_count).first;
+    for (float r : laser.ranges) it->second.add(r);
+  }
+  for (const auto& [label, d] : detectors)
+  {
+    saturation_[label] = d.threshold();
+    largest_[label] = d.largest();
+  }
+  double earliest = 0;
+  for (const auto& [stream, t] : times)
+    if (stream != "ODOM" && !t.empty())
+      earliest = std::min(earliest, *std::min_element(t.begin(), t.end()));
+  stats_.timestamp_offset = -earliest;
+  for (const auto& [stream, t] : times)
+  {
+    const double period =
+        medianPositivePeriod(t, params_.max_timestamp_gap, params_.default_period);
+    stamps_.emplace(stream, TimestampSequence(period, params_.max_timestamp_gap,
+                                              params_.repair_timestamps));
+    stats_.timestamps[stream].repair_period = period;
+  }
+}
+
+void CarmenLogReader::warn(size_t& printed, const std::string& msg)
+{
+  if (printed++ < params_.max_printed_warnings) warn_(msg);
+}
+
+void CarmenLogReader::addParam(const std::string& name, const std::string& value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  const bool numeric = end != value.c_str() && *end == '\0' && std::isfinite(v);
+  // Non-numeric values (on/off, device names) are fine for parameters the converter ignores.
+  if (!numeric && carmenParamIsUsed(name))
+    throw CarmenLineError("PARAM " + name + ": value '" + value + "' is not a finite number");
+  stats_.params++;
+  if (numeric) log_params_[name] = v;
+}
+
+double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t line)
+{
+  auto& counts = stats_.timestamps[stream];
+  counts.count++;
+  double shifted = raw + stats_.timestamp_offset;
+  if (shifted < 0)
+  {
+    counts.negative++;
+    warn(printed_timestamps_, path_ + ":" + std::to_string(line) + ": " + stream +
+                                  " timestamp " + std::to_string(raw) +
+                                  " is negative: not representable in MRPT, written as 0");
+    shifted = 0;
+  }
+  TimestampIssue issue;
+  const double t = stamps_.at(stream).next(shifted, issue);
+  if (issue == TimestampIssue::None) return t;
+  (issue == TimestampIssue::NonIncreasing ? counts.non_increasing : counts.forward_jumps)++;
+  if (params_.repair_timestamps) counts.repaired++;
+  warn(printed_timestamps_,
+       path_ + ":" + std::to_string(line) + ": " + stream + " timestamp " + std::to_string(raw) +
+           (issue == TimestampIssue::NonIncreasing ? " does not increase"
+                                                   : " jumps forward by more than " +
+                                                         std::to_string(params_.max_timestamp_gap) +
+                                                         " s") +
+           (params_.repair_timestamps ? ", replaced by " + std::to_string(t) : ""));
+  return t;
+}
+
+void CarmenLogReader::convertLaser(const CarmenLaser& laser, CarmenRecord& record)
+{
+  const auto geometry = carmenScanGeometry(laser, log_params_, params_, saturation_[laser.label],
+                                           largest_[laser.label]);
+  if (!geometry.warning.empty() && reported_geometry_[laser.label] != geometry.warning)
+  {
+    stats_.geometry_warnings++;
+    reported_geometry_[laser.label] = geometry.warning;
+    warn(printed_geometry_, path_ + ":" + std::to_string(line_no_) + ": " + geometry.warning);
+  }
+  record.raw_timestamp = laser.timestamp;
+  record.timestamp = stampOf(laser.label, laser.timestamp, line_no_);
+  auto scan = carmenScan(laser, geometry, record.timestamp);
+  if (laser.has_pose) record.reference_pose = mrpt::poses::CPose2D(laser.robot_pose);
+
+  auto& s = stats_.lasers[laser.label];
+  const size_t n = laser.ranges.size();
+  s.min_beams = s.scans == 0 ? n : std::min(s.min_beams, n);
+  s.max_beams = std::max(s.max_beams, n);
+  s.scans++;
+  s.rays += n;
+  for (size_t i = 0; i < n; i++) s.invalid_rays += scan->getScanRangeValidity(i) ? 0 : 1;
+  s.aperture = geometry.aperture;
+  s.max_range = geometry.max_range;
+  s.max_range_source = geometry.max_range_source;
+  record.observation = scan;
+}
+
+bool CarmenLogReader::next(CarmenRecord& record)
+{
+  record = CarmenRecord();
+  std::string text;
+  while (nextLine(text))
+  {
+    stats_.lines++;
+    CarmenLine line;
+    try
+    {
+      line = parseCarmenLine(text);
+      if (line.kind == CarmenLine::Kind::Param) addParam(line.param_name, line.param_value);
+    }
+    catch (const CarmenLineError& e)
+    {
+      if (stats_.malformed++ == 0) stats_.first_malformed_line = line_no_;
+      warn(printed_malformed_,
+           path_ + ":" + std::to_string(line_no_) + ": malformed line skipped: " + e.what());
+      continue;
+    }
+    record.line = line_no_;
+    switch (line.kind)
+    {
+      case CarmenLine::Kind::Blank: continue;
+      case CarmenLine::Kind::Unknown: stats_.unknown_messages[line.message]++; continue;
+      case CarmenLine::Kind::Param: continue;
+      case CarmenLine::Kind::Laser: convertLaser(line.laser, record); return true;
+      case CarmenLine::Kind::Odometry:
+      {
+        if (params_.laser_only)
+        {
+          stats_.odometry_dropped++;
+          continue;
+        }
+        const auto& o = line.odometry;
+        auto obs = mrpt::obs::CObservationOdometry::Create();
+        obs->sensorLabel = "ODOM";
+        record.raw_timestamp = o.timestamp;
+        record.timestamp = stampOf("ODOM", o.timestamp, line_no_);
+        obs->timestamp = mrpt::Clock::fromDouble(record.timestamp);
+        obs->odometry = mrpt::poses::CPose2D(o.pose);
+        obs->hasVelocities = true;
+        obs->velocityLocal = mrpt::math::TTwist2D(o.tv, 0, o.rv);
+        record.observation = obs;
+        stats_.odometry++;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+double CarmenLogReader::fractionRead() const
+{
+  const double total = static_cast<double>(file_.getTotalBytesCount());
+  return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
+}
+
+}  // namespace swslam::io

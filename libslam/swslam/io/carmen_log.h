@@ -1,0 +1,171 @@
+#pragma once
+// Streaming conversion of CARMEN logs (plain or gzip) into MRPT observations:
+// CObservation2DRangeScan for FLASER, RLASER, ROBOTLASER1/2, RAWLASER1..4 and
+// CObservationOdometry for ODOM, each with its line's own timestamp. PARAM lines set the
+// laser offsets, FOV and maximum range. Rules (max range, FOV, timestamps): doc/carmen.md.
+
+#include <swslam/io/carmen_line.h>
+#include <swslam/io/carmen_rules.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swslam::io
+{
+/** Converter options, .ini section [carmen]. */
+struct CarmenParams : public mrpt::config::CLoadableOptions
+{
+  /** [m] if > 0: the maximum range of every laser, overriding the log; 0: from the line's
+   * own field, else PARAM robot_*_laser_max, else saturation auto-detection. */
+  double max_range = 0;
+  /** Saturation cluster: readings within this fraction below the largest reading. */
+  double saturation_rel_tol = 0.005;
+  /** Minimum readings in the cluster for a laser to count as saturating. */
+  uint64_t saturation_min_count = 5;
+  /** Replace non-increasing (and jumping) timestamps by previous + median period. */
+  bool repair_timestamps = false;
+  /** [s] a forward step larger than this is a timestamp problem (e.g. 2^32 overflow). */
+  double max_timestamp_gap = 3600;
+  /** [s] repair period of a stream with no usable positive period. */
+  double default_period = 0.1;
+  /** Drop ODOM lines. */
+  bool laser_only = false;
+  /** Warnings printed per kind (malformed line, timestamp); all are counted. */
+  uint64_t max_printed_warnings = 5;
+
+  /** Throws std::invalid_argument naming the first key out of its range. */
+  void check() const;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                          const std::string& section) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
+                        const std::string& section) const override;
+};
+
+/** How one laser line becomes a scan. */
+struct CarmenScanGeometry
+{
+  mrpt::poses::CPose2D sensor_pose;  ///< on the robot, including a start-angle offset
+  double aperture = M_PI;            ///< MRPT aperture: first to last beam [rad]
+  double max_range = 0;              ///< readings >= this are invalid ("no return") [m]
+  std::string max_range_source;      ///< which rule gave max_range
+  std::string warning;               ///< non-empty: an inconsistency worth reporting
+};
+
+/** Numeric PARAM values read so far, by name. */
+using CarmenLogParams = std::map<std::string, double>;
+
+/** Geometry of a laser line: sensor pose, aperture and max range, by the rules of
+ * doc/carmen.md. `saturation` is the detected saturation value of this laser (if any)
+ * and `largest` its largest reading in the whole log. */
+CarmenScanGeometry carmenScanGeometry(const CarmenLaser& laser, const CarmenLogParams& log_params,
+                                      const CarmenParams& params,
+                                      std::optional<double> saturation, double largest);
+
+/** True for the PARAM names that carmenScanGeometry() reads (offsets, FOV, resolution,
+ * max range of the front and rear lasers); their values must be numbers. */
+bool carmenParamIsUsed(const std::string& name);
+
+/** The MRPT scan of a laser line: rays invalid when non-finite, <= 0 or >= max_range. */
+mrpt::obs::CObservation2DRangeScan::Ptr carmenScan(const CarmenLaser& laser,
+                                                   const CarmenScanGeometry& geometry,
+                                                   double timestamp);
+
+/** Per-laser figures of a conversion. */
+struct CarmenSensorStats
+{
+  size_t scans = 0, rays = 0, invalid_rays = 0;
+  size_t min_beams = 0, max_beams = 0;
+  double aperture = 0, max_range = 0;  ///< of the last scan
+  std::string max_range_source;
+};
+
+struct CarmenStats
+{
+  size_t lines = 0, params = 0, odometry = 0, odometry_dropped = 0;
+  size_t malformed = 0, first_malformed_line = 0;
+  std::map<std::string, size_t> unknown_messages;      ///< message type -> lines skipped
+  std::map<std::string, CarmenSensorStats> lasers;     ///< by label (FLASER...)
+  /** Timestamp problems of one stream (a laser label, or "ODOM"). */
+  struct Stamps
+  {
+    size_t count = 0, non_increasing = 0, forward_jumps = 0, repaired = 0;
+    size_t negative = 0;       ///< still negative after timestamp_offset: written as 0
+    double repair_period = 0;  ///< [s] used when repairing
+  };
+  std::map<std::string, Stamps> timestamps;  ///< by stream
+  bool repairing = false;
+  /** [s] added to every timestamp of the log: -(earliest laser timestamp) if that is
+   * negative, since MRPT cannot represent times before 1970 (Clock::toDouble wraps); else 0.
+   * Other streams' timestamps still negative after it are written as 0 (and counted). */
+  double timestamp_offset = 0;
+  size_t timestampProblems() const;
+  size_t geometry_warnings = 0;
+  size_t scans() const;
+};
+
+/** One converted line. */
+struct CarmenRecord
+{
+  mrpt::obs::CObservation::Ptr observation;  ///< CObservation2DRangeScan or CObservationOdometry
+  std::optional<mrpt::poses::CPose2D> reference_pose;  ///< laser lines with x y theta
+  double timestamp = 0;      ///< [s] as written into the observation (offset, repaired)
+  double raw_timestamp = 0;  ///< [s] as logged
+  size_t line = 0;           ///< 1-based line number in the log
+};
+
+/** Reads a CARMEN log one line at a time. The constructor makes a first pass over the
+ * file (saturation values and timestamp periods, without keeping the data); next() then
+ * streams the conversion. Warnings go to `warn` (default: stderr), the first
+ * params.max_printed_warnings of each kind; stats() counts all of them. */
+class CarmenLogReader
+{
+ public:
+  using WarningSink = std::function<void(const std::string&)>;
+  CarmenLogReader(const std::string& path, const CarmenParams& params, WarningSink warn = {});
+
+  /** Next converted observation; false at the end of the file. */
+  bool next(CarmenRecord& record);
+  const CarmenStats& stats() const { return stats_; }
+  /** Fraction of the file read so far, in [0, 1] (for progress and ETA). */
+  double fractionRead() const;
+
+ private:
+  void prescan();
+  void open();
+  bool nextLine(std::string& line);
+  void warn(size_t& printed, const std::string& msg);
+  void addParam(const std::string& name, const std::string& value);
+  double stampOf(const std::string& stream, double raw, size_t line);
+  void convertLaser(const CarmenLaser& laser, CarmenRecord& record);
+
+  std::string path_;
+  CarmenParams params_;
+  WarningSink warn_;
+  mrpt::io::CFileGZInputStream file_;
+  std::string buffer_;
+  size_t buffer_pos_ = 0;
+  bool eof_ = false;
+  size_t line_no_ = 0;
+  CarmenLogParams log_params_;
+  std::map<std::string, std::optional<double>> saturation_;
+  std::map<std::string, double> largest_;
+  std::map<std::string, TimestampSequence> stamps_;
+  std::map<std::string, std::string> reported_geometry_;
+  size_t printed_malformed_ = 0, printed_timestamps_ = 0, printed_geometry_ = 0;
+  CarmenStats stats_;
+};
+
+/** Human-readable summary of a conversion, one fact per line. */
+std::string formatCarmenStats(const CarmenStats& stats);
+
+}  // namespace swslam::io

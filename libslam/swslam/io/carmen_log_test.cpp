@@ -1,0 +1,381 @@
+// CARMEN log conversion end to end, on a small excerpt in the real formats written here.
+#include <swslam/io/carmen2rawlog.h>
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/sensor/scan.h>
+#include <swslam/io/scan_source.h>
+#include <swslam/common/tum_io.h>
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CObservationOdometry.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "test_support.h"
+
+namespace
+{
+using mrpt::obs::CObservation2DRangeScan;
+
+std::string laserLine(const std::string& label, const std::vector<std::string>& ranges,
+                      const std::string& pose, const std::string& ts)
+{
+  std::ostringstream s;
+  s << label << " " << ranges.size();
+  for (const auto& r : ranges) s << " " << r;
+  s << " " << pose << " " << pose << " " << ts << " pippo " << ts;
+  return s.str();
+}
+
+/** 180 beams at 2 + 0.01 i metres; `special` overrides some beams. */
+std::vector<std::string> ranges180(const std::map<int, std::string>& special)
+{
+  std::vector<std::string> r;
+  for (int i = 0; i < 180; i++)
+    r.push_back(special.count(i) ? special.at(i) : std::to_string(2 + 0.01 * i));
+  return r;
+}
+
+// Line numbers matter: the malformed line is line 8.
+std::string excerpt()
+{
+  std::ostringstream s;
+  s << "# synthetic CARMEN excerpt\n"
+    << "PARAM robot_frontlaser_offset 0.25 nohost 0\n"
+    << "PARAM robot_rearlaser_offset 0.3 nohost 0\n"
+    << "ODOM 0 0 0 0.1 0 0 10.00 host 10.00\n"
+    << laserLine("FLASER", ranges180({{10, "81.91"}, {20, "0"}, {30, "nan"}}), "1 2 0.1", "10.05")
+    << "\nODOM 0.1 0 0 0.1 0 0 10.10 host 10.10\n"
+    << laserLine("FLASER", ranges180({{11, "81.91"}}), "1.5 2 0.1", "10.05") << "\n"
+    << "FLASER 3 1 2\n"
+    << laserLine("FLASER", ranges180({{12, "81.91"}, {13, "81.91"}, {14, "81.91"}}), "2 2 0.2", "0")
+    << "\n" << laserLine("RLASER", ranges180({}), "2.5 2 0.2", "10.2") << "\n"
+    << "NEFF 12.5\n";
+  // ROBOTLASER1: 101 beams from -1.2 rad every 0.02 rad; laser at (0.1, 0.05) on the robot.
+  const mrpt::poses::CPose2D robot(3, 4, 0.5), laser = robot + mrpt::poses::CPose2D(0.1, 0.05, 0);
+  s << "ROBOTLASER1 0 -1.2 2 0.02 20 0.01 0 101";
+  for (int i = 0; i < 101; i++) s << " " << (i == 50 ? "25" : "4");
+  s << " 0 " << laser.x() << " " << laser.y() << " " << laser.phi()
+    << " 3 4 0.5 0 0 0 0 0 10.3 h 10.3\n";
+  s << "RAWLASER1 0 -1.5 3 0.5 30 0.01 0 7 1 2 3 4 5 6 7 0 10.4 h 10.4\n";
+  return s.str();
+}
+
+std::string writeLog(const std::string& dir, const std::string& text)
+{
+  const std::string path = dir + "/excerpt.log";
+  std::ofstream(path) << text;
+  return path;
+}
+
+struct Converted
+{
+  std::vector<swslam::io::CarmenRecord> records;
+  std::vector<std::string> warnings;
+  swslam::io::CarmenStats stats;
+};
+
+Converted convert(const std::string& path, const swslam::io::CarmenParams& params)
+{
+  Converted c;
+  swslam::io::CarmenLogReader reader(path, params,
+                                 [&](const std::string& m) { c.warnings.push_back(m); });
+  swslam::io::CarmenRecord rec;
+  while (reader.next(rec)) c.records.push_back(rec);
+  c.stats = reader.stats();
+  return c;
+}
+
+std::vector<std::shared_ptr<CObservation2DRangeScan>> scansOf(const Converted& c)
+{
+  std::vector<std::shared_ptr<CObservation2DRangeScan>> out;
+  for (const auto& r : c.records)
+    if (auto s = std::dynamic_pointer_cast<CObservation2DRangeScan>(r.observation))
+      out.push_back(s);
+  return out;
+}
+
+double toSec(mrpt::Clock::time_point t) { return mrpt::Clock::toDouble(t); }
+
+void expectTimes(const std::vector<std::shared_ptr<CObservation2DRangeScan>>& scans,
+                 const std::vector<double>& expected)
+{
+  ASSERT_EQ(scans.size(), expected.size());
+  for (size_t i = 0; i < scans.size(); i++)
+    EXPECT_NEAR(toSec(scans[i]->timestamp), expected[i], 1e-6) << "scan " << i;
+}
+
+/** Conversion of excerpt() (written into a fresh directory) to out.rawlog and gt.tum there. */
+swslam::io::Carmen2RawlogOptions excerptConversion(const std::string& dir_name)
+{
+  const auto dir = swslam::test::tempDir(dir_name);
+  swslam::io::Carmen2RawlogOptions opts;
+  opts.input = writeLog(dir, excerpt());
+  opts.output = dir + "/out.rawlog";
+  opts.ground_truth = dir + "/gt.tum";
+  return opts;
+}
+
+}  // namespace
+
+TEST(CarmenLog, ConvertsTheExcerpt)
+{
+  const auto dir = swslam::test::tempDir("carmen_excerpt");
+  const auto c = convert(writeLog(dir, excerpt()), swslam::io::CarmenParams());
+  EXPECT_EQ(c.stats.scans(), 6u);
+  EXPECT_EQ(c.stats.odometry, 2u);
+  EXPECT_EQ(c.stats.malformed, 1u);
+  EXPECT_EQ(c.stats.first_malformed_line, 8u);
+  EXPECT_EQ(c.stats.unknown_messages.at("NEFF"), 1u);
+  EXPECT_EQ(std::count_if(c.warnings.begin(), c.warnings.end(),
+                          [](const std::string& w) { return w.find(":8: malformed") != w.npos; }),
+            1);
+
+  const auto scans = scansOf(c);
+  ASSERT_EQ(scans.size(), 6u);
+  // Own timestamps, kept as logged: 10.05, 10.05 (duplicate), 0 (zero).
+  expectTimes(scans, {10.05, 10.05, 0.0, 10.2, 10.3, 10.4});
+  EXPECT_EQ(c.stats.timestamps.at("FLASER").non_increasing, 2u);
+  EXPECT_NEAR(toSec(c.records[0].observation->timestamp), 10.0, 1e-6);  // ODOM
+
+  // FLASER: 180 beams span 180 degrees; saturation at 81.91 (5 readings) is "no return".
+  const auto& f = *scans[0];
+  EXPECT_EQ(f.sensorLabel, "FLASER");
+  ASSERT_EQ(f.getScanSize(), 180u);
+  EXPECT_NEAR(f.aperture, M_PI, 1e-6);
+  EXPECT_NEAR(f.maxRange, 81.91, 1e-4);
+  EXPECT_TRUE(f.rightToLeft);
+  EXPECT_NEAR(f.getScanRange(5), 2.05, 1e-5);
+  EXPECT_TRUE(f.getScanRangeValidity(5));
+  EXPECT_FALSE(f.getScanRangeValidity(10));  // 81.91: max range
+  EXPECT_FALSE(f.getScanRangeValidity(20));  // 0
+  EXPECT_FALSE(f.getScanRangeValidity(30));  // nan
+  size_t valid = 0;
+  for (size_t i = 0; i < 180; i++) valid += f.getScanRangeValidity(i);
+  EXPECT_EQ(valid, 177u);
+  EXPECT_NEAR(f.sensorPose.x(), 0.25, 1e-9);  // PARAM robot_frontlaser_offset
+  EXPECT_NEAR(f.sensorPose.yaw(), 0, 1e-9);
+  EXPECT_EQ(swslam::sensor::scanFromObservation(f).size(), 177u);
+
+  // RLASER: behind the robot, looking back; no saturation, so all readings stay valid.
+  const auto& r = *scans[3];
+  EXPECT_EQ(r.sensorLabel, "RLASER");
+  EXPECT_NEAR(r.sensorPose.x(), -0.3, 1e-9);
+  EXPECT_NEAR(std::abs(r.sensorPose.yaw()), M_PI, 1e-9);
+  EXPECT_TRUE(r.getScanRangeValidity(0));
+
+  // Reference poses (x y theta) of laser lines with a pose.
+  ASSERT_TRUE(c.records[1].reference_pose);
+  EXPECT_NEAR(c.records[1].reference_pose->x(), 1, 1e-12);
+  EXPECT_NEAR(c.records[1].reference_pose->phi(), 0.1, 1e-12);
+}
+
+TEST(CarmenLog, RobotLaserAndRawLaserGeometry)
+{
+  const auto dir = swslam::test::tempDir("carmen_geometry");
+  const auto scans = scansOf(convert(writeLog(dir, excerpt()), swslam::io::CarmenParams()));
+  ASSERT_EQ(scans.size(), 6u);
+  const auto& rl = *scans[4];
+  EXPECT_EQ(rl.sensorLabel, "ROBOTLASER1");
+  EXPECT_NEAR(rl.maxRange, 20, 1e-6);      // the line's own maximum_range
+  EXPECT_FALSE(rl.getScanRangeValidity(50));  // 25 m >= 20 m
+  EXPECT_NEAR(rl.sensorPose.x(), 0.1, 1e-5);
+  EXPECT_NEAR(rl.sensorPose.y(), 0.05, 1e-5);
+  // Beam i must point at start_angle + i * resolution in the robot frame.
+  for (size_t i : {0u, 37u, 100u})
+  {
+    const double a = rl.sensorPose.yaw() + swslam::sensor::beamAngle(i, 101, rl.aperture);
+    EXPECT_NEAR(std::remainder(a - (-1.2 + 0.02 * i), 2 * M_PI), 0, 1e-5) << i;
+  }
+  const auto& raw = *scans[5];
+  EXPECT_EQ(raw.sensorLabel, "RAWLASER1");
+  EXPECT_NEAR(raw.aperture, 3.0, 1e-6);
+  EXPECT_NEAR(raw.sensorPose.x(), 0.25, 1e-9);  // front offset
+  EXPECT_NEAR(raw.sensorPose.yaw(), 0.0, 1e-6);  // -1.5 + 3/2
+}
+
+TEST(CarmenLog, RepairLaserOnlyAndParams)
+{
+  const auto dir = swslam::test::tempDir("carmen_repair");
+  swslam::io::CarmenParams p;
+  p.repair_timestamps = true;
+  p.laser_only = true;
+  const std::string text = "PARAM robot_front_laser_max 50.0 nohost 0\n"
+                           "PARAM laser_front_laser_fov 100 nohost 0\n" + excerpt();
+  const auto c = convert(writeLog(dir, text), p);
+  EXPECT_EQ(c.stats.odometry, 0u);
+  EXPECT_EQ(c.stats.odometry_dropped, 2u);
+  const auto scans = scansOf(c);
+  // No positive FLASER period in the log: the repair uses 0.1 s.
+  expectTimes(scans, {10.05, 10.15, 10.25, 10.2, 10.3, 10.4});
+  EXPECT_EQ(c.stats.timestamps.at("FLASER").repaired, 2u);
+  EXPECT_NEAR(c.records[2].raw_timestamp, 0.0, 1e-12);
+  EXPECT_NEAR(scans[0]->maxRange, 50, 1e-6);           // PARAM robot_front_laser_max
+  EXPECT_NEAR(scans[0]->aperture, 100 * M_PI / 180, 1e-6);  // PARAM laser_front_laser_fov
+
+  p.max_range = 2.5;  // forced: beyond 2.5 m is invalid
+  const auto forced = scansOf(convert(writeLog(dir, text), p));
+  EXPECT_TRUE(forced[0]->getScanRangeValidity(49));   // 2.49 m
+  EXPECT_FALSE(forced[0]->getScanRangeValidity(50));  // 2.50 m
+}
+
+TEST(CarmenLog, NegativeTimestampsAreShifted)
+{
+  const auto dir = swslam::test::tempDir("carmen_negative");
+  const auto text = laserLine("FLASER", ranges180({}), "0 0 0", "-0.5") + "\n" +
+                    laserLine("FLASER", ranges180({}), "1 0 0", "0.5") + "\n" +
+                    "ODOM 0 0 0 0 0 0 -2.0 h -2.0\n";
+  const auto c = convert(writeLog(dir, text), swslam::io::CarmenParams());
+  // Laser timestamps set the shift; an ODOM one still negative after it is written as 0.
+  EXPECT_NEAR(c.stats.timestamp_offset, 0.5, 1e-12);
+  EXPECT_EQ(c.stats.timestamps.at("ODOM").negative, 1u);
+  EXPECT_NEAR(toSec(c.records.back().observation->timestamp), 0.0, 1e-6);
+  const auto scans = scansOf(c);
+  ASSERT_EQ(scans.size(), 2u);
+  EXPECT_NEAR(toSec(scans[0]->timestamp), 0.0, 1e-6);
+  EXPECT_NEAR(toSec(scans[1]->timestamp), 1.0, 1e-6);
+}
+
+TEST(CarmenLog, RawlogRoundTripAndGroundTruth)
+{
+  auto opts = excerptConversion("carmen_rawlog");
+  const auto c = convert(opts.input, opts.params);
+  const auto stats = swslam::io::carmen2rawlog(opts, [](const std::string&) {});
+  EXPECT_EQ(stats.scans(), 6u);
+
+  swslam::io::RawlogReader reader(opts.output);
+  swslam::io::RawlogItem item;
+  size_t i = 0;
+  while (reader.next(item))
+  {
+    ASSERT_LT(i, c.records.size());
+    const auto& expected = c.records[i++].observation;
+    ASSERT_TRUE(item.observation);
+    EXPECT_EQ(item.observation->sensorLabel, expected->sensorLabel);
+    EXPECT_EQ(item.observation->timestamp, expected->timestamp);
+    auto got = std::dynamic_pointer_cast<CObservation2DRangeScan>(item.observation);
+    auto want = std::dynamic_pointer_cast<CObservation2DRangeScan>(expected);
+    ASSERT_EQ(!got, !want);
+    if (!got) continue;
+    ASSERT_EQ(got->getScanSize(), want->getScanSize());
+    for (size_t k = 0; k < got->getScanSize(); k++)
+    {
+      EXPECT_EQ(got->getScanRangeValidity(k), want->getScanRangeValidity(k));
+      if (want->getScanRangeValidity(k)) EXPECT_EQ(got->getScanRange(k), want->getScanRange(k));
+    }
+    EXPECT_EQ(got->aperture, want->aperture);
+    EXPECT_EQ(got->maxRange, want->maxRange);
+    EXPECT_NEAR((got->sensorPose - want->sensorPose).norm(), 0, 1e-9);
+  }
+  EXPECT_EQ(i, c.records.size());
+
+  const auto gt = swslam::common::readTum(opts.ground_truth);
+  ASSERT_EQ(gt.size(), 5u);  // FLASER x3, RLASER, ROBOTLASER1 (RAWLASER has no pose)
+  EXPECT_NEAR(gt[0].t, 10.05, 1e-6);
+  EXPECT_NEAR(gt[0].pose.x(), 1, 1e-6);
+  EXPECT_NEAR(gt[4].pose.x(), 3, 1e-6);
+  EXPECT_NEAR(gt[4].pose.phi(), 0.5, 1e-6);
+}
+
+TEST(CarmenLog, ReferenceOdometryPrecedesEachScanWithAPose)
+{
+  auto opts = excerptConversion("carmen_reference_odometry");
+  opts.reference_odometry = true;
+  // Needs laser-only (no ODOM lines mixed in) and repaired timestamps (the third FLASER is
+  // stamped 0: its reading would be dropped as out of order and the motion come out wrong).
+  for (const auto& [laser_only, repair] : {std::pair{false, true}, {true, false}, {false, false}})
+  {
+    opts.params.laser_only = laser_only;
+    opts.params.repair_timestamps = repair;
+    EXPECT_THROW(swslam::io::carmen2rawlog(opts, [](const std::string&) {}), std::invalid_argument);
+    EXPECT_FALSE(std::filesystem::exists(opts.output));
+  }
+  opts.params.laser_only = true;
+  opts.params.repair_timestamps = true;
+  swslam::io::carmen2rawlog(opts, [](const std::string&) {});
+  const auto gt = swslam::common::readTum(opts.ground_truth);
+  ASSERT_EQ(gt.size(), 5u);
+  // Each scan with a reference pose comes right after an odometry reading of that pose at
+  // its own time; the log's ODOM lines are gone, and RAWLASER (no pose) gets none.
+  swslam::io::RawlogReader reader(opts.output);
+  swslam::io::RawlogItem item;
+  std::shared_ptr<mrpt::obs::CObservationOdometry> pending;
+  size_t posed = 0, scans = 0;
+  while (reader.next(item))
+  {
+    if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(item.observation))
+    {
+      EXPECT_FALSE(pending) << "two odometry readings in a row";
+      EXPECT_EQ(odo->sensorLabel, "REFERENCE_ODOMETRY");
+      pending = odo;
+      continue;
+    }
+    ASSERT_TRUE(std::dynamic_pointer_cast<CObservation2DRangeScan>(item.observation));
+    scans++;
+    if (!pending) continue;
+    ASSERT_LT(posed, gt.size());
+    EXPECT_EQ(pending->timestamp, item.observation->timestamp);
+    EXPECT_NEAR((pending->odometry - gt[posed].pose).norm(), 0, 1e-9);
+    EXPECT_NEAR(pending->odometry.phi(), gt[posed].pose.phi(), 1e-9);
+    posed++;
+    pending.reset();
+  }
+  EXPECT_EQ(posed, gt.size());
+  EXPECT_EQ(scans, gt.size() + 1);  // and the RAWLASER scan
+
+  // Read as a run reads it: each FLASER scan's odometry increment is the reference motion.
+  swslam::io::ScanSourceOptions so;
+  so.sensor_label = "FLASER";
+  const auto source = swslam::io::openScanSource(opts.output, so, swslam::io::CarmenParams());
+  swslam::sensor::ScanInput in;
+  std::vector<std::optional<mrpt::poses::CPose2D>> increments;
+  while (source->next(in)) increments.push_back(in.odometry_increment);
+  ASSERT_EQ(increments.size(), 3u);  // FLASER at x = 1, 1.5, 2 (see excerpt())
+  for (size_t k = 1; k < 3; k++)
+  {
+    ASSERT_TRUE(increments[k]);
+    const auto want = gt[k].pose - gt[k - 1].pose;
+    EXPECT_NEAR((*increments[k] - want).norm(), 0, 1e-9) << k;
+    EXPECT_NEAR(mrpt::math::wrapToPi(increments[k]->phi() - want.phi()), 0, 1e-9) << k;
+  }
+}
+
+TEST(CarmenLog, NonNumericUsedParamIsMalformed)
+{
+  const auto dir = swslam::test::tempDir("carmen_badparam");
+  const auto text = "PARAM robot_front_laser_max far nohost 0\n"
+                    "PARAM robot_use_laser on nohost 0\n" +
+                    laserLine("FLASER", ranges180({}), "0 0 0", "1") + "\n";
+  const auto c = convert(writeLog(dir, text), swslam::io::CarmenParams());
+  EXPECT_EQ(c.stats.malformed, 1u);
+  EXPECT_EQ(c.stats.first_malformed_line, 1u);
+  EXPECT_EQ(c.stats.params, 1u);
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("robot_front_laser_max"), std::string::npos) << c.warnings[0];
+  EXPECT_EQ(scansOf(c).size(), 1u);
+}
+
+TEST(CarmenLog, BadInputGivesClearErrors)
+{
+  const auto dir = swslam::test::tempDir("carmen_bad");
+  EXPECT_THROW(swslam::io::CarmenLogReader(dir + "/missing.log", swslam::io::CarmenParams()),
+               std::runtime_error);
+  swslam::io::Carmen2RawlogOptions opts;
+  opts.input = dir + "/nolaser.log";
+  std::ofstream(opts.input) << "NEFF 1\nODOM 0 0 0 0 0 0 1 h 1\n\x01\x02 garbage\n";
+  opts.output = dir + "/out.rawlog";
+  try
+  {
+    swslam::io::carmen2rawlog(opts, [](const std::string&) {});
+    FAIL() << "no exception";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("no laser scan"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(opts.output));
+}

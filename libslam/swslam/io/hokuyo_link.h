@@ -1,0 +1,91 @@
+#pragma once
+// The connection to a Hokuyo through MRPT's CHokuyoURG driver, kept alive: it configures the
+// driver from an MRPT rawlog-grabber-style section ([LASER_2D], driver = CHokuyoURG, the
+// driver's own keys), polls it for scans, and when the sensor stops answering or the link
+// drops, says so and reconnects with a growing backoff, for as long as it is polled.
+//
+// MRPT 2.5's driver, as observed against tests/scip's emulator: its own TCP socket can spin
+// forever on a failed write (after a drop, inside doProcessSimple()), so over Ethernet the
+// driver is bound (bindIO) to swslam's TcpStream, which never blocks for long; a lost link
+// or a silent sensor then replaces the driver and its connection, retried with a growing
+// backoff. Over serial the driver's own port handling is used (it reopens the port by
+// itself), after checking that the device exists. Errors the driver logs are forwarded.
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace mrpt::hwdrivers
+{
+class CHokuyoURG;
+}
+
+namespace swslam::io
+{
+class TcpStream;
+
+struct HokuyoLinkOptions
+{
+  std::chrono::milliseconds stall_timeout{2000};   ///< no scan this long: reported as stopped answering
+  std::chrono::milliseconds min_backoff{250};      ///< first wait before reconnecting...
+  std::chrono::milliseconds max_backoff{4000};     ///< ...doubling up to this
+};
+
+/** Counts of what happened on the link. */
+struct HokuyoLinkStats
+{
+  size_t scans = 0, connects = 0, errors = 0, stalls = 0;
+  size_t driver_messages = 0;  ///< error messages the driver logged
+  bool connected = false;  ///< a scan arrived since the last (re)connection
+};
+
+/** Throws std::invalid_argument naming the problem if `section` is missing, its driver is not
+ * CHokuyoURG, a key is not one the driver or MRPT's sensor base reads, or neither (or both)
+ * of a serial port and an IP address is given. */
+void checkHokuyoSection(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+
+class HokuyoLink
+{
+ public:
+  using Log = std::function<void(const std::string&)>;
+  HokuyoLink(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+             HokuyoLinkOptions options, Log log);
+  ~HokuyoLink();
+
+  /** The next scan, or nullptr if none arrived within about the driver's timeout (or while
+   * waiting to reconnect: the wait is cut in steps of at most 100 ms, so a caller can stop). */
+  mrpt::obs::CObservation2DRangeScan::Ptr poll();
+
+  const HokuyoLinkStats& stats() const { return stats_; }
+
+ private:
+  bool reachable(std::string& why) const;
+  bool connect();  ///< false (driver dropped) if initialize() logged an error
+  void trouble(const std::string& why);     ///< reported once per outage
+  void retryLater(const std::string& why);  ///< no driver: try again after the backoff
+  void dropDriver();
+
+  std::string ini_text_, ini_without_link_, section_;
+  std::shared_ptr<TcpStream> stream_;  ///< Ethernet link (serial: the driver's own port)
+  std::string stream_why_;
+  std::string ip_, serial_;
+  int port_ = 10940;
+  HokuyoLinkOptions options_;
+  Log log_;
+  std::unique_ptr<mrpt::hwdrivers::CHokuyoURG> driver_;
+  HokuyoLinkStats stats_;
+  static constexpr size_t kMaxDriverMessages = 5;  ///< printed per outage (all counted)
+  size_t driver_messages_this_outage_ = 0;
+  std::string last_driver_message_;
+  bool in_outage_ = false;
+  bool dropping_ = false;
+  std::chrono::steady_clock::time_point outage_start_;
+  std::chrono::milliseconds backoff_;
+  std::chrono::steady_clock::time_point last_scan_, retry_at_;
+};
+
+}  // namespace swslam::io

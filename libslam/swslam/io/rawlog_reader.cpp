@@ -1,0 +1,167 @@
+#include <swslam/io/rawlog_reader.h>
+
+#include <algorithm>
+#include <cstring>
+#include <optional>
+#include <sstream>
+
+#include <mrpt/core/exceptions.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+
+namespace swslam::io
+{
+namespace
+{
+/** MRPT's exception text without its call-stack backtraces: the "Message:" lines of the
+ * nested exceptions, outermost first (or the whole text if it has none). */
+std::string mrptMessages(const std::exception& e)
+{
+  const std::string text = mrpt::exception_to_str(e);
+  std::istringstream lines(text);
+  std::string line, out;
+  const std::string tag = "Message:";
+  while (std::getline(lines, line))
+  {
+    if (line.compare(0, tag.size(), tag) != 0) continue;
+    const size_t start = line.find_first_not_of(' ', tag.size());
+    if (start == std::string::npos) continue;
+    out += (out.empty() ? "" : ": ") + line.substr(start);
+  }
+  return out.empty() ? text : out;
+}
+
+// The start of a CObservation2DRangeScan entry (versions 6-8) up to its ray count: MRPT
+// allocates 9 bytes per ray before it reads them, so a corrupt count of 2^32 asked for 38 GB
+// (a segfault where the allocator gave up, minutes of page faults where it did not).
+constexpr char kScanClass[] = "mrpt::obs::CObservation2DRangeScan";
+constexpr char kPoseClass[] = "mrpt::poses::CPose3D";
+constexpr size_t kScanClassLen = sizeof(kScanClass) - 1, kPoseClassLen = sizeof(kPoseClass) - 1;
+// class tag, name, version, aperture, rightToLeft, maxRange; pose tag, name, version (3:
+// 12 doubles), end marker; then the ray count.
+constexpr size_t kPoseAt = 1 + kScanClassLen + 1 + 4 + 1 + 4;
+constexpr size_t kRayCountAt = kPoseAt + 1 + kPoseClassLen + 1 + 12 * 8 + 1;
+/** Far above any 2D scanner (the largest have tens of thousands of rays). */
+constexpr uint32_t kMaxScanRays = 1u << 20;
+
+/** The ray count of the scan entry that `head` starts, if it is one of the known layout. */
+std::optional<uint32_t> scanRayCount(const std::string& head)
+{
+  if (head.size() < kRayCountAt + 4) return std::nullopt;
+  auto u8 = [&](size_t i) { return static_cast<uint8_t>(head[i]); };
+  if (u8(0) != (0x80 | kScanClassLen) || head.compare(1, kScanClassLen, kScanClass) != 0) return std::nullopt;
+  const uint8_t version = u8(1 + kScanClassLen);
+  if (version < 6 || version > 8) return std::nullopt;
+  if (u8(kPoseAt) != (0x80 | kPoseClassLen) || head.compare(kPoseAt + 1, kPoseClassLen, kPoseClass) != 0 ||
+      u8(kPoseAt + 1 + kPoseClassLen) != 3 || u8(kRayCountAt - 1) != 0x88)
+    return std::nullopt;
+  return uint32_t(u8(kRayCountAt)) | uint32_t(u8(kRayCountAt + 1)) << 8 |
+         uint32_t(u8(kRayCountAt + 2)) << 16 | uint32_t(u8(kRayCountAt + 3)) << 24;  // little-endian
+}
+}  // namespace
+
+/** The archive the reader parses: the file with a look-ahead, so that an entry's start can be
+ * checked before MRPT reads it. */
+class RawlogReader::LookaheadArchive : public mrpt::serialization::CArchive
+{
+ public:
+  explicit LookaheadArchive(mrpt::io::CFileGZInputStream& in) : in_(in) {}
+  /** The next `n` bytes of the file (fewer at its end), not consumed. */
+  const std::string& peek(size_t n)
+  {
+    char buf[256];
+    while (ahead_.size() < n)
+    {
+      const size_t got = in_.Read(buf, std::min(sizeof(buf), n - ahead_.size()));
+      if (got == 0) break;
+      ahead_.append(buf, got);
+    }
+    return ahead_;
+  }
+
+ protected:
+  size_t write(const void*, size_t) override { throw std::logic_error("rawlog: the reader cannot write"); }
+  size_t read(void* buf, size_t len) override
+  {
+    const size_t from_ahead = std::min(len, ahead_.size());
+    std::memcpy(buf, ahead_.data(), from_ahead);
+    ahead_.erase(0, from_ahead);
+    return from_ahead + (from_ahead < len ? in_.Read(static_cast<char*>(buf) + from_ahead, len - from_ahead) : 0);
+  }
+
+ private:
+  mrpt::io::CFileGZInputStream& in_;
+  std::string ahead_;
+};
+
+RawlogReader::RawlogReader(const std::string& path) : path_(path)
+{
+  bool opened = false;
+  try
+  {
+    opened = file_.open(path);
+  }
+  catch (const std::exception&)
+  {
+  }
+  if (!opened) throw std::runtime_error("rawlog: cannot open '" + path + "'");
+  archive_ = std::make_unique<LookaheadArchive>(file_);
+}
+
+RawlogReader::~RawlogReader() = default;
+
+bool RawlogReader::next(RawlogItem& item)
+{
+  using namespace mrpt::obs;
+  while (pending_.empty())
+  {
+    const std::string& head = archive_->peek(kRayCountAt + 4);
+    if (head.empty()) return false;  // the clean end of the file
+    const uint64_t pos_before = file_.getPosition() - head.size();
+    auto corrupt = [&](const std::string& why) {
+      return RawlogError("rawlog '" + path_ + "': corrupt or truncated entry #" + std::to_string(entries_) +
+                             " (at byte " + std::to_string(pos_before) + "): " + why,
+                         entries_);
+    };
+    if (const auto rays = scanRayCount(head); rays && *rays > kMaxScanRays)
+      throw corrupt("a scan of " + std::to_string(*rays) + " rays (more than " + std::to_string(kMaxScanRays) +
+                    ": a corrupt count)");
+    mrpt::serialization::CSerializable::Ptr obj;
+    try
+    {
+      *archive_ >> obj;
+    }
+    catch (const std::exception& e)
+    {
+      throw corrupt(mrptMessages(e));
+    }
+    entries_++;
+    if (!obj) continue;
+    if (auto obs = std::dynamic_pointer_cast<CObservation>(obj))
+    {
+      pending_.push_back({obs, nullptr});
+    }
+    else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
+    {
+      for (const auto& o : *sf) pending_.push_back({o, nullptr});
+    }
+    else if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj))
+    {
+      if (auto mv = acts->getBestMovementEstimation())
+        pending_.push_back({nullptr, std::make_shared<CActionRobotMovement2D>(*mv)});
+    }
+    // Other object kinds (maps, poses...) are not part of the input stream: skipped.
+  }
+  item = std::move(pending_.front());
+  pending_.pop_front();
+  return true;
+}
+
+double RawlogReader::fractionRead() const
+{
+  const double total = static_cast<double>(file_.getTotalBytesCount());
+  return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
+}
+
+}  // namespace swslam::io

@@ -1,0 +1,173 @@
+#include <swslam/io/scan_source.h>
+
+#include <swslam/geometry/se2_scaling.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/system/datetime.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace swslam::io
+{
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::obs::CObservationOdometry;
+using mrpt::poses::CPose2D;
+
+void OdometryIntegrator::addReading(const CPose2D& odometry, mrpt::Clock::time_point t)
+{
+  const mrpt::Clock::time_point unknown{};
+  if (last_reading_ && t != unknown && last_reading_->time != unknown)
+  {
+    if (t < last_reading_->time) return;  // out of order: the newer reading stands
+    if (t == last_reading_->time)
+    {
+      last_reading_->pose = odometry;  // a correction at the same time: no new interval
+      return;
+    }
+  }
+  previous_reading_ = last_reading_;
+  last_reading_ = Reading{odometry, t};
+}
+
+void OdometryIntegrator::addIncrement(const CPose2D& increment)
+{
+  accumulated_ = accumulated_ + increment;
+  has_actions_ = true;
+}
+
+CPose2D OdometryIntegrator::readingAt(mrpt::Clock::time_point t) const
+{
+  const Reading& last = *last_reading_;
+  const mrpt::Clock::time_point unknown{};
+  if (!previous_reading_ || t == unknown || last.time == unknown || previous_reading_->time == unknown)
+    return last.pose;
+  const double interval = mrpt::system::timeDifference(previous_reading_->time, last.time);
+  if (!(interval > 0)) return last.pose;
+  const double s = std::clamp(mrpt::system::timeDifference(last.time, t) / interval, -1.0, 1.0);
+  return last.pose + geometry::scaledMotion(last.pose - previous_reading_->pose, s);
+}
+
+std::optional<CPose2D> OdometryIntegrator::takeIncrement(mrpt::Clock::time_point scan_time)
+{
+  std::optional<CPose2D> inc;
+  std::optional<CPose2D> at_scan;
+  if (last_reading_) at_scan = readingAt(scan_time);
+  if (has_actions_)
+    inc = accumulated_;
+  else if (at_scan && reading_at_scan_)
+    inc = *at_scan - *reading_at_scan_;  // reading_at_scan^-1 (+) at_scan
+  reading_at_scan_ = at_scan;
+  accumulated_ = CPose2D();
+  has_actions_ = false;
+  return inc;
+}
+
+namespace
+{
+/** The logic both formats share: sensor selection and odometry. */
+class SourceBase : public ScanSource
+{
+ public:
+  explicit SourceBase(const ScanSourceOptions& opts) : opts_(opts), label_(opts.sensor_label) {}
+  const ScanSourceStats& stats() const override { return stats_; }
+
+ protected:
+  /** Takes one observation; true if it is a scan to return (written to `out`). */
+  bool take(const mrpt::obs::CObservation::Ptr& obs, sensor::ScanInput& out)
+  {
+    if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs))
+    {
+      if (label_.empty()) label_ = scan->sensorLabel;
+      if (scan->sensorLabel != label_)
+      {
+        stats_.other_sensors++;
+        return false;
+      }
+      out.observation = scan;
+      out.odometry_increment = odometry_.takeIncrement(scan->timestamp);
+      if (!opts_.use_odometry) out.odometry_increment.reset();
+      stats_.scans++;
+      return true;
+    }
+    if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obs))
+    {
+      odometry_.addReading(odo->odometry, odo->timestamp);
+      stats_.odometry++;
+      return false;
+    }
+    stats_.other_observations++;
+    return false;
+  }
+
+  const ScanSourceOptions opts_;
+  std::string label_;
+  OdometryIntegrator odometry_;
+  ScanSourceStats stats_;
+};
+
+class RawlogSource : public SourceBase
+{
+ public:
+  RawlogSource(const std::string& path, const ScanSourceOptions& opts) : SourceBase(opts), reader_(path) {}
+
+  bool next(sensor::ScanInput& out) override
+  {
+    RawlogItem item;
+    while (reader_.next(item))
+    {
+      if (item.odometry_increment)
+      {
+        odometry_.addIncrement(item.odometry_increment->poseChange->getMeanVal());
+        stats_.odometry++;
+      }
+      else if (take(item.observation, out))
+        return true;
+    }
+    return false;
+  }
+  std::string describe() const override { return "rawlog " + reader_.path(); }
+  double fractionRead() const override { return reader_.fractionRead(); }
+
+ private:
+  RawlogReader reader_;
+};
+
+class CarmenSource : public SourceBase
+{
+ public:
+  CarmenSource(const std::string& path, const ScanSourceOptions& opts, const CarmenParams& carmen)
+      : SourceBase(opts), path_(path), reader_(path, carmen)
+  {
+  }
+  bool next(sensor::ScanInput& out) override
+  {
+    CarmenRecord record;
+    while (reader_.next(record))
+      if (take(record.observation, out)) return true;
+    return false;
+  }
+  std::string describe() const override { return "CARMEN log " + path_; }
+  double fractionRead() const override { return reader_.fractionRead(); }
+
+ private:
+  std::string path_;
+  CarmenLogReader reader_;
+};
+
+bool endsWith(const std::string& s, const std::string& suffix)
+{
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+}  // namespace
+
+std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
+                                           const CarmenParams& carmen)
+{
+  for (const char* ext : {".log", ".log.gz", ".clf", ".clf.gz"})
+    if (endsWith(path, ext)) return std::make_unique<CarmenSource>(path, opts, carmen);
+  return std::make_unique<RawlogSource>(path, opts);
+}
+
+}  // namespace swslam::io

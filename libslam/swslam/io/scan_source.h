@@ -1,0 +1,85 @@
+#pragma once
+// Where a run's scans come from: an MRPT rawlog (either format) or a CARMEN log, read one
+// scan at a time. Odometry found in the log (CObservationOdometry readings or rawlog actions)
+// becomes each scan's odometry increment since the previous scan, unless disabled.
+
+#include <swslam/io/carmen_log.h>
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/sensor/scan_input.h>
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace swslam::io
+{
+struct ScanSourceOptions
+{
+  bool use_odometry = true;
+  std::string sensor_label;  ///< only scans of this sensor; empty: the first one seen
+};
+
+/** Counts of what a source skipped. */
+struct ScanSourceStats
+{
+  size_t scans = 0;              ///< scans returned
+  size_t other_sensors = 0;      ///< scans of another sensor label, skipped
+  size_t other_observations = 0; ///< observations that are neither scans nor odometry
+  size_t odometry = 0;           ///< odometry readings/actions used
+};
+
+class ScanSource
+{
+ public:
+  virtual ~ScanSource() = default;
+  /** The next scan; false at the end. Throws RawlogError (rawlogs) or std::runtime_error
+   * naming the problem when the input is corrupt: what was returned before stays valid. */
+  virtual bool next(sensor::ScanInput& out) = 0;
+  virtual const ScanSourceStats& stats() const = 0;
+  virtual std::string describe() const = 0;
+  /** Fraction of the input read, in [0, 1]. */
+  virtual double fractionRead() const = 0;
+};
+
+/** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), else as a
+ * rawlog. Throws std::runtime_error if it cannot be opened. */
+std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
+                                           const CarmenParams& carmen);
+
+/** Turns odometry readings between scans into per-scan increments. Absolute readings are
+ * aligned with the scans' times: the odometry at a scan is extrapolated (or interpolated)
+ * from the last two readings at their constant velocity, by at most one reading interval, so
+ * odometry and scans at different rates give the motion between the scans themselves. */
+class OdometryIntegrator
+{
+ public:
+  /** An absolute odometry reading (CObservationOdometry) taken at `t` (default: unknown). A
+   * reading older than the last one is ignored; one at the same time replaces it. */
+  void addReading(const mrpt::poses::CPose2D& odometry, mrpt::Clock::time_point t = {});
+  /** A relative motion (rawlog action). */
+  void addIncrement(const mrpt::poses::CPose2D& increment);
+  /** The motion since the previous call (nothing if no odometry arrived in between or
+   * before the previous scan); starts a new interval. `scan_time` (default: unknown) aligns
+   * absolute readings with the scan. */
+  std::optional<mrpt::poses::CPose2D> takeIncrement(mrpt::Clock::time_point scan_time = {});
+
+ private:
+  /** The odometry at time t from the last readings (the last one if t or their times are
+   * unknown). */
+  mrpt::poses::CPose2D readingAt(mrpt::Clock::time_point t) const;
+
+  struct Reading
+  {
+    mrpt::poses::CPose2D pose;
+    mrpt::Clock::time_point time;
+  };
+  std::optional<Reading> last_reading_, previous_reading_;
+  std::optional<mrpt::poses::CPose2D> reading_at_scan_;  ///< odometry at the last scan
+  mrpt::poses::CPose2D accumulated_;  ///< actions since the last scan
+  bool has_actions_ = false;
+};
+
+}  // namespace swslam::io

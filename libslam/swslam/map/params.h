@@ -1,0 +1,36 @@
+#pragma once
+// Parameters of the occupancy grid map (paper sec. IV), section [map].
+
+#include <swslam/geometry/pose_threshold.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <string>
+
+namespace swslam::map
+{
+/** Parameters of MapBuilder and of the map writers, section [map]. */
+struct MapParams : public mrpt::config::CLoadableOptions
+{
+  double resolution = 0.2;         ///< [m] cell size
+  double initial_half_size = 20;   ///< [m] the grid starts as [-s, s]^2 around the origin
+  double grow_margin = 20;         ///< [m] room added beyond a scan that leaves the grid
+  double prob_occupied = 0.65;     ///< eq. (16) prop_occupied, for the cell at a ray's end
+  double prob_free = 0.35;         ///< eq. (16) prop_free, for the cells a ray crosses
+  double max_insertion_range = 80; ///< [m] rays are cut here (no hit inserted beyond)
+  bool no_return_as_free = false;  ///< rays without a return clear space (MRPT's rule)
+  double horizontal_tolerance = mrpt::DEG2RAD(0.05);  ///< [rad] (ini: _DEG) a tilted scan is an error
+  geometry::MoveThreshold reinsert;          ///< (ini: reinsert_translation, reinsert_rotation_DEG)
+  double occupied_thresh = 0.65;   ///< exports: occupancy above this is an obstacle
+  double free_thresh = 0.196;      ///< exports: occupancy below this is free
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+
+  /** MRPT's insertion options that implement eq. (15)-(16) with these values. */
+  mrpt::maps::COccupancyGridMap2D::TInsertionOptions insertionOptions() const;
+};
+
+}  // namespace swslam::map

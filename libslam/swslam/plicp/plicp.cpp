@@ -1,0 +1,117 @@
+#include <swslam/plicp/plicp.h>
+
+#include <swslam/plicp/closed_form.h>
+#include <swslam/plicp/covariance.h>
+#include <swslam/plicp/decimation.h>
+#include <swslam/plicp/outliers.h>
+#include <swslam/plicp/run.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam::plicp
+{
+const char* toString(MatchStatus s)
+{
+  switch (s)
+  {
+    case MatchStatus::Converged: return "converged";
+    case MatchStatus::MaxIterations: return "max_iterations";
+    case MatchStatus::TooFewCorrespondences: return "too_few_correspondences";
+    case MatchStatus::Diverged: return "diverged";
+    case MatchStatus::InvalidInput: return "invalid_input";
+  }
+  return "unknown";
+}
+
+namespace
+{
+std::string sensorMismatch(const sensor::Scan& a, const sensor::Scan& b)
+{
+  if (a.sensor_label == b.sensor_label && a.beam_count == b.beam_count &&
+      std::abs(a.aperture - b.aperture) < 1e-6 && (a.sensor_pose - b.sensor_pose).norm() < 1e-9)
+    return {};
+  auto describe = [](const sensor::Scan& s) {
+    return "'" + s.sensor_label + "' (" + std::to_string(s.beam_count) + " beams, " +
+           std::to_string(s.aperture * 180 / M_PI) + " deg)";
+  };
+  return "reference and current scans come from different sensors: " + describe(a) + " vs " +
+         describe(b);
+}
+
+MatchResult fail(MatchResult r, MatchStatus s, std::string msg)
+{
+  r.status = s;
+  r.message = std::move(msg);
+  return r;
+}
+}  // namespace
+
+MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
+                       const mrpt::poses::CPose2D& initial_guess, const PlicpParams& params)
+{
+  const sensor::Scan& ref = reference.scan;
+  MatchResult res;
+  res.ref_valid_rays = ref.size();
+  res.cur_valid_rays = cur.size();
+  res.pose = initial_guess;
+  if (const auto why = sensorMismatch(ref, cur); !why.empty())
+    return fail(res, MatchStatus::InvalidInput, why);
+  if (reference.index.min_segment != params.min_segment_length)
+    return fail(res, MatchStatus::InvalidInput,
+                "reference scan was indexed with another min_segment_length");
+  const size_t min_n = static_cast<size_t>(params.min_correspondences);
+  if (ref.size() < min_n || cur.size() < min_n)
+    return fail(res, MatchStatus::TooFewCorrespondences,
+                "too few valid rays: reference " + std::to_string(ref.size()) + ", current " +
+                    std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
+
+  const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
+  // Iterate on every k-th ray (dense sensors), then one step with all of them.
+  const size_t stride = plicp::decimationStride(cur, params.point_spacing);
+  const sensor::Scan sub = stride > 1 ? plicp::decimated(cur, stride) : sensor::Scan();
+  const bool thin = sub.size() >= min_n;
+  plicp::IcpRun run = plicp::runWithRetries(reference, thin ? sub : cur, x0, params);
+  const bool run_ok =
+      run.status == MatchStatus::Converged || run.status == MatchStatus::MaxIterations;
+  const bool full = !thin || (run_ok && plicp::fullResolutionStep(reference, cur, params, run));
+  const sensor::Scan& used = full ? cur : sub;  // the scan run.kept indexes
+  res.cur_valid_rays = used.size();     // so that correspondences / cur_valid_rays stays a fraction
+  res.iterations = run.iterations;
+  res.status = run.status;
+  if (!res.ok()) return fail(res, run.status, run.message);
+  const Eigen::Vector3d& x = run.x;
+  const auto& kept = run.kept;
+  res.pose = mrpt::poses::CPose2D(x.x(), x.y(), x.z());
+  if ((x.head<2>() - x0.head<2>()).norm() > params.max_correction_xy ||
+      std::abs(std::remainder(x.z() - x0.z(), 2 * M_PI)) > params.max_correction_theta)
+    return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
+
+  // Residuals and covariance (eq. 4-10) at the final estimate.
+  const auto cur_in_ref = plicp::transformed(used, x);
+  const auto errors = plicp::lineErrors(reference, cur_in_ref, kept);
+  res.correspondences = kept.size();
+  res.sum_sq_residuals = 0;
+  for (double e : errors)
+  {
+    res.sum_sq_residuals += e * e;
+    if (e < 3 * params.range_sigma) res.inliers++;
+  }
+  std::vector<plicp::CovarianceTerm> cov_terms;
+  cov_terms.reserve(kept.size());
+  for (const auto& k : kept)
+  {
+    auto dir = [](const sensor::Scan& s, int j) { return Eigen::Vector2d(s.points[j] / s.ranges[j]); };
+    cov_terms.push_back({dir(used, k.i), dir(ref, k.j1), dir(ref, k.j2), used.ranges[k.i],
+                         ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
+  }
+  res.covariance = plicp::plicpCovariance(cov_terms, x, params.range_sigma);
+  if (params.covariance_from_residuals)
+  {
+    res.variance_factor = plicp::residualVarianceFactor(res.sum_sq_residuals, kept.size(), params.range_sigma);
+    res.covariance *= res.variance_factor;
+  }
+  return res;
+}
+
+}  // namespace swslam::plicp

@@ -1,0 +1,250 @@
+// Every shipped config file loads strictly; wrong keys and sections are errors naming them.
+#include <swslam/common/config_keys.h>
+#include <swslam/system/config.h>
+
+#include <swslam/io/hokuyo_link.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/system/string_utils.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <utility>
+#include <vector>
+
+using namespace swslam;
+using namespace swslam::system;
+
+TEST(Config, EveryFileInConfigDirLoads)
+{
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(SWSLAM_SOURCE_DIR) + "/config"))
+  {
+    if (e.path().extension() != ".ini") continue;
+    files++;
+    const mrpt::config::CConfigFile cfg(e.path().string());
+    if (cfg.sectionExists("LASER_2D"))  // a sensor config for swslam-live
+    {
+      EXPECT_NO_THROW(io::checkHokuyoSection(cfg, "LASER_2D")) << e.path();
+      EXPECT_NO_THROW(loadSystemParams(cfg, {"LASER_2D"})) << e.path();
+    }
+    else
+      EXPECT_NO_THROW(loadSystemParams(e.path().string())) << e.path();
+  }
+  EXPECT_GE(files, 1u);
+}
+
+TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
+{
+  // config/default.ini documents every parameter: each key a module writes is in the file.
+  const mrpt::config::CConfigFile file(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
+  const SystemParams defaults;
+  mrpt::config::CConfigFileMemory written;
+  saveSystemParams(defaults, written);
+  for (const auto& section : SystemParams::sections())
+  {
+    std::vector<std::string> keys;
+    written.getAllKeys(section, keys);
+    ASSERT_FALSE(keys.empty()) << section;
+    for (auto key : keys)
+    {
+      key = mrpt::system::trim(key);
+      EXPECT_TRUE(file.keyExists(section, key)) << "[" << section << "] " << key << " missing";
+    }
+  }
+}
+
+TEST(Config, DefaultFileValuesEqualTheInClassDefaults)
+{
+  const auto loaded = loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
+  const plicp::PlicpParams d;
+  EXPECT_DOUBLE_EQ(loaded.plicp.max_correspondence_dist, d.max_correspondence_dist);
+  EXPECT_DOUBLE_EQ(loaded.plicp.initial_correspondence_dist, d.initial_correspondence_dist);
+  EXPECT_DOUBLE_EQ(loaded.plicp.min_segment_length, d.min_segment_length);
+  EXPECT_NEAR(loaded.plicp.epsilon_theta, d.epsilon_theta, 1e-6);
+  EXPECT_NEAR(loaded.plicp.max_correction_theta, d.max_correction_theta, 1e-9);
+  EXPECT_EQ(loaded.plicp.max_iterations, d.max_iterations);
+  EXPECT_EQ(loaded.plicp.remove_doubles, d.remove_doubles);
+}
+
+TEST(Config, MisspelledKeyIsAnErrorNamingIt)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicp]\nmax_iteration = 10\n");
+  try
+  {
+    loadSystemParams(cfg);
+    FAIL();
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("'max_iteration'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("[plicp]"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Config, UnknownSectionIsAnError)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicpp]\nmax_iterations = 10\n");
+  EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+TEST(Config, OutOfRangeValueIsAnError)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicp]\ntrim_keep_fraction = 1.5\n");
+  EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+namespace
+{
+/** Loading `text` fails with an error whose message contains `expected`. */
+void expectLoadError(const std::string& text, const std::string& expected)
+{
+  mrpt::config::CConfigFileMemory cfg(text);
+  try
+  {
+    loadSystemParams(cfg);
+    ADD_FAILURE() << "accepted: " << text;
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
+TEST(Config, AMapTooLargeToAllocateIsAnErrorNotACrash)
+{
+  // An infinite or huge first map would be cast to a cell count past an int's range.
+  for (const char* text : {"[map]\ninitial_half_size = inf\n", "[map]\ninitial_half_size = 1e9\n",
+                           "[map]\ngrow_margin = 1e9\n", "[map]\nresolution = 0.005\ninitial_half_size = 41\n"})
+    expectLoadError(text, "at most 8192 cells");
+  mrpt::config::CConfigFileMemory ok("[map]\nresolution = 0.005\ninitial_half_size = 40\n");
+  EXPECT_NO_THROW(loadSystemParams(ok));
+}
+
+TEST(Config, ValuesThatWouldStallOrOverflowAreErrorsNamingTheKey)
+{
+  // Found by a sanitizer campaign: each passed the loader, then made a cast undefined (a huge
+  // kernel, an infinite cell or angle step, a huge decimation stride) or a run stall (PLICP
+  // running to a huge iteration cap on every scan).
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"[correlative]\nsigma = 1e12\n", "sigma"},
+      {"[correlative]\nsigma = 10\n", "sigma"},
+      {"[correlative]\nresolution = inf\n", "resolution"},
+      {"[correlative]\ntheta_step_DEG = inf\n", "theta_step_DEG"},
+      {"[correlative]\nwindow_theta_DEG = 1e300\n", "window_theta_DEG"},
+      {"[plicp]\npoint_spacing_DEG = 1e300\n", "point_spacing_DEG"},
+      {"[plicp]\nmax_iterations = 1000000\n", "max_iterations"},
+      {"[carmen]\nmax_range = 1e300\n", "max_range"}};
+  for (const auto& [text, key] : cases)
+    expectLoadError(text, key);
+}
+
+TEST(Config, AnIntegerKeyReadAsAnotherNumberIsAnError)
+{
+  // MRPT's reader takes the leading digits of an integer key ("1e3" as 1, "2.5" as 2) and an
+  // unsigned "-1" as 2^64 - 1, silently.
+  for (const char* text : {"[plicp]\nmax_iterations = 1e3\n", "[plicp]\nmax_iterations = 40.5\n",
+                           "[graph_optimizer]\nfull_optimization_interval = -1\n"})
+    expectLoadError(text, "is not an integer");
+  // The same numbers written as integers, and floating-point keys, are taken.
+  mrpt::config::CConfigFileMemory ok("[plicp]\nmax_iterations = 1000\nepsilon_xy = 1e-3\n"
+                                     "[graph_optimizer]\nfull_optimization_interval = 3\n");
+  EXPECT_NO_THROW(loadSystemParams(ok));
+}
+
+TEST(Config, BrokenCrossSectionRuleIsAnErrorNamingBothKeys)
+{
+  mrpt::config::CConfigFileMemory cfg(
+      "[tracking]\ndense_max_index_gap = 40\n[loop_closure]\nmin_index_gap = 30\n");
+  try
+  {
+    loadSystemParams(cfg);
+    FAIL() << "expected std::invalid_argument";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("dense_max_index_gap"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("min_index_gap"), std::string::npos);
+  }
+}
+
+TEST(Config, MissingFileIsAnError)
+{
+  EXPECT_THROW(loadSystemParams(std::string("/nonexistent/x.ini")), std::invalid_argument);
+}
+
+TEST(Config, InlineCommentIsAnErrorNotASilentFalse)
+{
+  mrpt::config::CConfigFileMemory cfg("[plicp]\nremove_doubles = true   # keep one\n");
+  EXPECT_THROW(loadSystemParams(cfg), std::invalid_argument);
+}
+
+TEST(Config, AValueNotOfItsKeysKindIsAnErrorNotASilentZero)
+{
+  // MRPT reads numbers with atoi/atof and booleans with atoi: each of these loaded silently.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"plicp", "coarse_start_fraction = abc"},  // a number read as 0
+      {"plicp", "min_segment_length = 0.3 0.4"},  // read as 0.3
+      {"plicp", "max_iterations = 12abc"},      // read as 12
+      {"plicp", "remove_doubles = 0x10"},        // a boolean read as false
+      {"plicp", "remove_doubles = maybe"},
+      {"plicp", "epsilon_xy = nan"},
+      {"plicp", "epsilon_xy ="},                 // no value
+  };
+  for (const auto& [section, line] : bad)
+  {
+    mrpt::config::CConfigFileMemory cfg("[" + section + "]\n" + line + "\n");
+    try
+    {
+      loadSystemParams(cfg);
+      ADD_FAILURE() << line << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      const std::string key = line.substr(0, line.find(' '));
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  // Every spelling MRPT reads as meant still loads, and -inf is a valid kernel shape.
+  mrpt::config::CConfigFileMemory good(
+      "[plicp]\nmax_iterations = 12\nremove_doubles = no\nepsilon_xy = 1e-4\n"
+      "[graph_optimizer]\nkernel_alpha = -inf\n");
+  const SystemParams p = loadSystemParams(good);
+  EXPECT_EQ(p.plicp.max_iterations, 12);
+  EXPECT_FALSE(p.plicp.remove_doubles);
+  EXPECT_TRUE(std::isinf(p.graph_optimizer.kernel_alpha));
+}
+
+TEST(Config, AStrayLineOrARepeatedKeyIsAnErrorNamingTheLine)
+{
+  // MRPT's reader skipped a line without '=' and kept one of two settings of a key, silently.
+  const std::string dir = std::filesystem::temp_directory_path() / "swslam_config_lines";
+  std::filesystem::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"[plicp]\nmax_iterations = 12\n# note\nmax_correspondence_dist 2\n", "line 4: 'max_correspondence_dist 2'"},
+      {"[plicp]\n= 5\n", "line 2"},
+      {"[plicp]\nmax_iterations = 12\n\nMax_Iterations = 40\n", "line 4: key 'Max_Iterations' of [plicp] is set again (first on line 2)"},
+  };
+  for (const auto& [text, expected] : bad)
+  {
+    std::ofstream(dir + "/bad.ini") << text;
+    try
+    {
+      loadSystemParams(dir + "/bad.ini");
+      ADD_FAILURE() << text << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  // The same key in two sections is two keys.
+  std::ofstream(dir + "/ok.ini") << "[plicp]\nmax_iterations = 12\n[graph_optimizer]\nmax_iterations = 50\n";
+  EXPECT_EQ(loadSystemParams(dir + "/ok.ini").plicp.max_iterations, 12);
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,178 @@
+#include <swslam/system/graph_module.h>
+
+#include <swslam/loop/final_refinement.h>
+#include <swslam/graph/sliding_window.h>
+
+#include <mrpt/system/CTimeLogger.h>
+
+#include <stdexcept>
+
+namespace swslam::system
+{
+using mrpt::poses::CPose2D;
+
+GraphModule::GraphModule(const graph::GraphOptimizerParams& graph, const loop::LoopClosureParams& loops,
+                         const plicp::PlicpParams& plicp, const std::optional<correlative::CorrelativeParams>& search)
+    : graph_params_(graph),
+      loop_params_(loops),
+      plicp_params_(plicp),
+      search_params_(search),
+      schedule_(graph.full_optimization_interval),
+      corroboration_(loops)
+{
+}
+
+void GraphModule::addEdge(const graph::Constraint& e, GraphStep& step)
+{
+  mrpt::poses::CPosePDFGaussianInf z;
+  z.mean = e.z;
+  z.cov_inv = mrpt::math::CMatrixDouble33(e.information);
+  try
+  {
+    graph_.addEdge(e.from, e.to, z, e.kind);
+  }
+  catch (const std::invalid_argument&)
+  {
+    step.edges_rejected++;
+  }
+}
+
+GraphStep GraphModule::addNode(const NewNode& node)
+{
+  GraphStep step;
+  step.scan = node.scan;
+  step.node = node.keyframe.id;
+  const size_t id = node.keyframe.id;
+  if (id != nodes_.size())
+    throw std::logic_error("graph: node " + std::to_string(id) + " arrived out of order");
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    // The tracker placed the node relative to its copy of the previous node; the graph's
+    // estimate of that node may have moved since.
+    CPose2D pose = node.keyframe.pose;
+    if (!node.edges.empty() && graph_.hasNode(node.edges.front().from))
+      pose = graph_.pose(node.edges.front().from) + node.edges.front().z;
+    graph_.addNode(id, pose);
+    for (const graph::Constraint& e : node.edges) addEdge(e, step);
+  }
+  loop::LoopNode ln;
+  ln.id = id;
+  ln.scan = node.keyframe.scan;
+  ln.path_length = 0;
+  if (!nodes_.empty())
+  {
+    const loop::LoopNode& prev = nodes_.back();
+    ln.path_length = prev.path_length + node.edges.front().z.norm();
+  }
+  nodes_.push_back(ln);
+
+  const size_t correcting = closeLoops(id, step);
+  optimize(schedule_.fullNow(id, correcting), step);
+  step.insert = MapInsert{node.scan, id, node.observation,
+                          step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
+  return step;
+}
+
+size_t GraphModule::closeLoops(size_t id, GraphStep& step)
+{
+  if (!loop_params_.enabled) return 0;
+  size_t correcting = 0;
+  const auto checks = loop::checkLoops(
+      graph_, nodes_.at(id), [this](size_t n) { return nodes_.at(n); }, loop_params_, plicp_params_,
+      search_params_);
+  std::vector<graph::Constraint> verified;
+  for (const loop::LoopCheck& check : checks)
+  {
+    step.loops_checked++;
+    if (check.edge) verified.push_back(*check.edge);
+  }
+  const auto corroborated = corroboration_.add(
+      id, verified, [this](size_t n) { return graph_.pose(n); },
+      [this](size_t n) { return nodes_.at(n).path_length; });
+  for (const graph::Constraint& e : corroborated)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool corrects =
+        graph_.hasNode(e.from) && graph_.hasNode(e.to) &&
+        loopCorrectsGraph(graph_.pose(e.to) - graph_.pose(e.from), e.z,
+                          graph_params_.full_optimization_loop_xy,
+                          graph_params_.full_optimization_loop_theta);
+    const size_t before = step.edges_rejected;
+    addEdge(e, step);
+    if (step.edges_rejected == before)
+    {
+      step.loops_accepted++;
+      correcting += corrects;
+      loops_++;
+    }
+  }
+  return correcting;
+}
+
+void GraphModule::optimize(bool full, GraphStep& step)
+{
+  step.full = full;
+  std::lock_guard<std::mutex> lock(mutex_);
+  step.report = full ? graph::optimizeFull(graph_, graph_params_) : graph::optimizeWindow(graph_, graph_params_);
+  const std::vector<graph::PoseGraph::TNodeID> ids =
+      full ? graph_.nodeIds() : graph_.newestNodes(graph_params_.window_size);
+  step.reinsert.scan = step.scan;
+  for (const auto id : ids)
+  {
+    step.poses[id] = graph_.pose(id);
+    step.reinsert.poses[id] = graph_.pose(id);
+  }
+}
+
+GraphStep GraphModule::optimizeAll(size_t scan)
+{
+  GraphStep step;
+  step.scan = scan;
+  if (nodes_.empty()) return step;
+  schedule_.ranFull(nodes_.size() - 1);
+  optimize(true, step);
+  return step;
+}
+
+GraphStep GraphModule::refineAll(size_t scan, const loop::FinalRefinementParams& p)
+{
+  GraphStep step;
+  step.scan = scan;
+  if (!p.enabled || nodes_.empty()) return step;
+  for (int pass = 0; pass < p.passes; ++pass)
+  {
+    const auto checks = loop::refinementChecks(
+        graph_, [this](size_t n) { return nodes_.at(n); }, p, plicp_params_);
+    size_t added = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (const loop::LoopCheck& check : checks)
+      {
+        if (!check.edge) continue;
+        const size_t before = step.edges_rejected;
+        addEdge(*check.edge, step);
+        added += step.edges_rejected == before;
+      }
+    }
+    step.pairs_refined += checks.size();
+    step.refinement_edges += added;
+    if (added == 0) break;
+    schedule_.ranFull(nodes_.size() - 1);
+    optimize(true, step);
+  }
+  return step;
+}
+
+graph::PoseGraph GraphModule::graphCopy() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return graph_;
+}
+
+size_t GraphModule::loopCount() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return loops_;
+}
+
+}  // namespace swslam::system

@@ -1,0 +1,86 @@
+#pragma once
+// The graph optimization module (paper Fig. 1, sec. III): adds each new node with its edges,
+// optimizes the sliding window, looks for loops (index gap + distance), verifies them by
+// PLICP and a chi-square gate, and on an accepted loop that corrects the graph optimizes the
+// whole graph (at most once per [graph_optimizer] full_optimization_interval nodes while
+// loops keep coming).
+//
+// Threading: one thread (the graph thread, or the deterministic loop) calls addNode() and
+// optimizeAll() and refineAll(); graphCopy() and the counters may be called from any thread.
+
+#include <swslam/graph/optimizer.h>
+#include <swslam/graph/optimizer_params.h>
+#include <swslam/loop/final_refinement_params.h>
+#include <swslam/loop/closer.h>
+#include <swslam/loop/corroboration.h>
+#include <swslam/graph/pose_graph.h>
+#include <swslam/system/full_optimization_schedule.h>
+#include <swslam/system/messages.h>
+
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace swslam::system
+{
+/** What one graph step did, and what the other modules must learn from it. */
+struct GraphStep
+{
+  size_t scan = 0;
+  size_t node = 0;
+  size_t loops_checked = 0, loops_accepted = 0;
+  size_t pairs_refined = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
+  size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
+  bool full = false;          ///< the whole graph was optimized
+  graph::OptimizationReport report;
+  PoseUpdate poses;                ///< optimized node poses (for tracking)
+  std::optional<MapInsert> insert;  ///< for the map: the new node's scan, at its optimized pose...
+  MapReinsert reinsert;             ///< ...then the optimized poses (moved nodes are re-inserted)
+};
+
+class GraphModule
+{
+ public:
+  /** `search`: the correlative search of loop checks whose match from the graph's guess
+   * failed (verifyLoop); none when not given. */
+  GraphModule(const graph::GraphOptimizerParams& graph, const loop::LoopClosureParams& loops,
+              const plicp::PlicpParams& plicp, const std::optional<correlative::CorrelativeParams>& search = std::nullopt);
+
+  /** Adds the node (its pose re-based on the graph's estimate of the previous node), its
+   * edges and any verified loop, then optimizes the window, or everything after a loop that
+   * corrects the graph (FullOptimizationSchedule, loopCorrectsGraph). */
+  GraphStep addNode(const NewNode& node);
+
+  /** Optimizes the whole graph (e.g. at the end of a run). */
+  GraphStep optimizeAll(size_t scan);
+
+  /** The final refinement (loop/final_refinement.h), `p.passes` rounds: matches every close
+   * pair of nodes that shares no edge, adds the accepted matches as loop edges and, if any,
+   * optimizes the whole graph. A round that adds no edge ends the pass early. The step's poses
+   * are those of the last optimization (none when no edge was added). */
+  GraphStep refineAll(size_t scan, const loop::FinalRefinementParams& p);
+
+  graph::PoseGraph graphCopy() const;
+  size_t loopCount() const;
+
+ private:
+  void addEdge(const graph::Constraint& e, GraphStep& step);
+  /** Checks node `id`'s loop candidates and adds the corroborated loops (counted in
+   * step.loops_accepted); returns how many of them disagree with the graph enough to ask
+   * for a full optimization (loopCorrectsGraph). */
+  size_t closeLoops(size_t id, GraphStep& step);
+  void optimize(bool full, GraphStep& step);
+
+  const graph::GraphOptimizerParams graph_params_;
+  const loop::LoopClosureParams loop_params_;
+  const plicp::PlicpParams plicp_params_;
+  const std::optional<correlative::CorrelativeParams> search_params_;
+  std::vector<loop::LoopNode> nodes_;  ///< by node id; only the owning thread
+  mutable std::mutex mutex_;
+  graph::PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
+  size_t loops_ = 0;   ///< guarded by mutex_
+  FullOptimizationSchedule schedule_;  ///< only the owning thread
+  loop::LoopCorroboration corroboration_;    ///< only the owning thread
+};
+
+}  // namespace swslam::system

@@ -1,0 +1,22 @@
+#pragma once
+// Parameters of the system as a whole (how the three modules run), section [system].
+
+#include <mrpt/config/CLoadableOptions.h>
+
+namespace swslam::system
+{
+struct SystemOptions : public mrpt::config::CLoadableOptions
+{
+  int input_queue_capacity = 200;  ///< threaded mode: scans waiting for tracking at most (feed() waits)
+  bool final_full_optimization = true;  ///< optimize the whole graph once the input ends
+  int max_printed_warnings = 10;   ///< skipped-scan messages printed per kind; all are counted
+  int timestamp_resume_scans = 5;  ///< this many scans in order behind the last taken one resume the log (0: never)
+  /// threaded mode: keyframes the graph thread has not finished at most when tracking takes a
+  /// scan (it waits until then); 0: tracking goes on from optimized keyframes; -1: no bound
+  int max_graph_lag = 0;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+}  // namespace swslam::system

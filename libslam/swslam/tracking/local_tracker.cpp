@@ -1,0 +1,230 @@
+#include <swslam/tracking/local_tracker.h>
+#include <swslam/geometry/information.h>
+
+#include <swslam/tracking/motion_prediction.h>
+#include <swslam/correlative/searched_match.h>
+#include <swslam/geometry/sensor_frame.h>
+
+#include <mrpt/system/datetime.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace swslam::tracking
+{
+using mrpt::poses::CPose2D;
+
+const char* toString(TrackingSource s)
+{
+  switch (s)
+  {
+    case TrackingSource::First: return "first";
+    case TrackingSource::Match: return "match";
+    case TrackingSource::Searched: return "searched";
+    case TrackingSource::Odometry: return "odometry";
+    case TrackingSource::ConstantMotion: return "constant_motion";
+  }
+  return "unknown";
+}
+
+LocalTracker::LocalTracker(const TrackingParams& tracking, const plicp::PlicpParams& plicp,
+                           const correlative::CorrelativeParams& correlative)
+    : tracking_(tracking), plicp_(plicp), correlative_(correlative)
+{
+}
+
+std::vector<correlative::Ray> LocalTracker::submapRays() const
+{
+  // The last keyframes' rays up to max_range, in the last keyframe's sensor frame:
+  // s_last^-1 (+) x_last^-1 (+) x_k (+) s_k.
+  const Keyframe& last = keyframes_.back();
+  const CPose2D to_last_sensor = -(last.pose + last.sensor_pose);
+  std::vector<correlative::Ray> out;
+  const size_t n = static_cast<size_t>(correlative_.submap_keyframes);
+  for (size_t k = keyframes_.size() > n ? keyframes_.size() - n : 0; k < keyframes_.size(); k++)
+  {
+    const Keyframe& kf = keyframes_[k];
+    const CPose2D t = to_last_sensor + (kf.pose + kf.sensor_pose);
+    const Eigen::Vector2d origin(t.x(), t.y());
+    for (const auto& p : kf.scan->scan.points)
+    {
+      if (p.norm() > correlative_.max_range) continue;
+      double x, y;
+      t.composePoint(p.x(), p.y(), x, y);
+      out.push_back({origin, {x, y}});
+    }
+  }
+  return out;
+}
+
+plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose2D& guess, TrackingStep& step)
+{
+  const Keyframe& last = keyframes_.back();
+  plicp::MatchResult m = plicp::matchScans(*last.scan, scan, guess, plicp_);
+  if (!correlative_.enabled) return m;
+  const correlative::SearchTrigger why = correlative::searchTrigger(m, guess, correlative_);
+  // Once trust_prediction_after scans in a row confirmed their predictions, a match that
+  // stays on its prediction is kept even with little overlap, until a match fails or moves
+  // its guess: the surroundings are new or changed (a door swung shut), which the submap
+  // cannot explain and the search would explain elsewhere.
+  const bool proven = correlative_.trust_prediction_after > 0 &&
+                      confirmed_in_a_row_ >= static_cast<size_t>(correlative_.trust_prediction_after);
+  if (why == correlative::SearchTrigger::None) confirmed_in_a_row_++;
+  // The count goes on through such scans: a door passes by over several of them.
+  if (why == correlative::SearchTrigger::None || (why == correlative::SearchTrigger::LowOverlap && proven)) return m;
+  confirmed_in_a_row_ = 0;
+  if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
+  {
+    search_pyramid_ = std::make_shared<const correlative::ScorePyramid>(
+        correlative::searchPyramid(submapRays(), correlative_));
+    search_pyramid_keyframe_ = last.id;
+  }
+  const correlative::SearchedMatch s = correlative::searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_,
+                                         steady_.costPerM2(correlative_));
+  step.searched = true;
+  if (s.replaced) step.source = TrackingSource::Searched;
+  return s.match;
+}
+
+Keyframe& LocalTracker::addKeyframe(const sensor::Scan& scan, const CPose2D& pose)
+{
+  Keyframe kf;
+  kf.id = keyframes_.size();
+  kf.pose = pose;
+  kf.scan = std::make_shared<const plicp::ReferenceScan>(scan, plicp_);
+  kf.sensor_pose = scan.sensor_pose;
+  kf.timestamp = scan.timestamp;
+  keyframes_.push_back(std::move(kf));
+  return keyframes_.back();
+}
+
+bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
+{
+  return rel.norm() > tracking_.keyframe_translation ||
+         std::abs(rel.phi()) > tracking_.keyframe_rotation;
+}
+
+std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, const Keyframe& to,
+                                                   const sensor::Scan& scan, graph::EdgeKind kind) const
+{
+  // Guess from the current estimates; PLICP works in the sensor frame.
+  const CPose2D guess = geometry::sensorMotion(from.sensor_pose, to.pose - from.pose);
+  const plicp::MatchResult m = plicp::matchScans(*from.scan, scan, guess, plicp_);
+  if (!m.ok()) return std::nullopt;
+  // The chain between recent nodes is accurate to centimetres: a match far from it found
+  // another local minimum (low overlap, repeated structure), not a correction.
+  if ((m.pose.translation() - guess.translation()).norm() > tracking_.dense_gate_xy ||
+      std::abs(std::remainder(m.pose.phi() - guess.phi(), 2 * M_PI)) > tracking_.dense_gate_theta)
+    return std::nullopt;
+  graph::Constraint e;
+  e.from = from.id;
+  e.to = to.id;
+  e.z = geometry::vehicleMotion(from.sensor_pose, m.pose);
+  e.information = geometry::informationFromCovariance(
+      geometry::vehicleMotionCovariance(from.sensor_pose, m.pose, m.covariance));
+  e.kind = kind;
+  return e;
+}
+
+graph::Constraint LocalTracker::priorEdge(const Keyframe& from, const Keyframe& to) const
+{
+  graph::Constraint e;
+  e.from = from.id;
+  e.to = to.id;
+  e.z = to.pose - from.pose;
+  const double sxy = tracking_.lost_prior_sigma_xy, sth = tracking_.lost_prior_sigma_theta;
+  e.information = Eigen::Vector3d(1 / (sxy * sxy), 1 / (sxy * sxy), 1 / (sth * sth)).asDiagonal();
+  e.kind = graph::EdgeKind::OdometryPrior;
+  return e;
+}
+
+TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs,
+                                   const std::optional<CPose2D>& odometry_increment)
+{
+  const sensor::Scan scan = sensor::scanFromCheckedObservation(obs, tracking_.min_range);
+  // Seconds since the previous scan (0 for the first).
+  const double interval =
+      keyframes_.empty() ? 0.0 : mrpt::system::timeDifference(last_time_, scan.timestamp);
+  last_time_ = scan.timestamp;
+  TrackingStep step;
+  step.valid_rays = scan.size();
+  if (keyframes_.empty())
+  {
+    addKeyframe(scan, CPose2D());
+    step.new_keyframe = true;
+    return step;
+  }
+  const Keyframe& last = keyframes_.back();
+  // Initial guess: the previous relative pose moved by the expected motion (the paper uses
+  // the previous motion, here at constant velocity over this scan's interval; odometry, when
+  // present, is the better prediction).
+  CPose2D motion = last_motion_;
+  if (odometry_increment)
+    motion = *odometry_increment;
+  else if (tracking_.constant_velocity)
+    motion = geometry::scaledMotion(last_motion_, intervalRatio(interval, last_interval_, tracking_.max_interval_ratio));
+  last_interval_ = interval;
+  const CPose2D predicted = relative_ + motion;
+  const auto t0 = std::chrono::steady_clock::now();
+  step.source = TrackingSource::Match;
+  step.match = matchLast(scan, geometry::sensorMotion(last.sensor_pose, predicted), step);
+  step.match_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CPose2D rel = predicted;
+  if (step.match.ok())
+    rel = geometry::vehicleMotion(last.sensor_pose, step.match.pose);
+  else
+    step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
+  last_motion_ = rel - relative_;
+  steady_.add(last_motion_, motion);  // the error of the prediction this scan used
+  relative_ = rel;
+  step.keyframe = last.id;
+  step.relative = rel;
+  step.pose = last.pose + rel;
+  if (!pastKeyframeThreshold(rel)) return step;
+
+  // A new node: the consecutive edge from the match (or, without one, a weak prior that says
+  // so), then dense edges to every other node within the radius, nearest first.
+  const size_t prev_id = keyframes_.back().id;
+  Keyframe& node = addKeyframe(scan, step.pose);
+  const Keyframe& previous = keyframes_[prev_id];
+  if (step.match.ok())
+  {
+    graph::Constraint e{prev_id, node.id, rel, Eigen::Matrix3d::Identity(), graph::EdgeKind::Consecutive};
+    e.information = geometry::informationFromCovariance(
+        geometry::vehicleMotionCovariance(previous.sensor_pose, step.match.pose, step.match.covariance));
+    step.edges.push_back(e);
+  }
+  else
+    step.edges.push_back(priorEdge(previous, node));
+  // Only recent nodes: older ones within reach are loop candidates, verified by the graph.
+  std::vector<std::pair<double, size_t>> near;
+  const size_t gap = static_cast<size_t>(tracking_.dense_max_index_gap);
+  for (size_t id = node.id > gap ? node.id - gap : 0; id < prev_id; ++id)
+  {
+    const Keyframe& kf = keyframes_[id];
+    const double d = (kf.pose.translation() - node.pose.translation()).norm();
+    if (d <= tracking_.dense_radius) near.emplace_back(d, kf.id);
+  }
+  std::sort(near.begin(), near.end());
+  near.resize(std::min(near.size(), static_cast<size_t>(tracking_.max_dense_edges)));
+  for (const auto& [d, id] : near)
+  {
+    step.dense_matches++;
+    if (auto e = matchEdge(keyframes_[id], node, scan, graph::EdgeKind::DenseNeighbour)) step.edges.push_back(*e);
+  }
+  step.new_keyframe = true;
+  step.keyframe = node.id;
+  step.relative = CPose2D();
+  relative_ = CPose2D();
+  return step;
+}
+
+void LocalTracker::setKeyframePose(size_t id, const CPose2D& pose)
+{
+  keyframes_.at(id).pose = pose;
+}
+
+}  // namespace swslam::tracking

@@ -1,0 +1,106 @@
+#pragma once
+// Local tracking (paper sec. II.C, Fig. 1-2): each scan is matched by PLICP against the
+// latest keyframe, starting from the previous relative pose moved by the expected motion.
+// Past a translation or rotation threshold a new keyframe (graph node) is made; it is
+// connected to the previous node and, densely, to every node within a radius.
+
+#include <swslam/correlative/params.h>
+#include <swslam/correlative/score_grid.h>
+#include <swslam/graph/constraint.h>
+#include <swslam/plicp/plicp.h>
+#include <swslam/tracking/steady_motion.h>
+#include <swslam/tracking/params.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace swslam::tracking
+{
+/** A graph node made by tracking: its vehicle pose and the scan other scans match against. */
+struct Keyframe
+{
+  size_t id = 0;
+  mrpt::poses::CPose2D pose;  ///< vehicle pose in the map frame (updated by the optimizer)
+  std::shared_ptr<const plicp::ReferenceScan> scan;
+  mrpt::poses::CPose2D sensor_pose;  ///< sensor mounting on the vehicle
+  mrpt::Clock::time_point timestamp;
+};
+
+/** Where the pose of a scan came from. */
+enum class TrackingSource
+{
+  First,           ///< the first scan: the map origin
+  Match,           ///< PLICP against the keyframe converged
+  Searched,        ///< the prediction failed; PLICP from a correlative search's pose won
+  Odometry,        ///< the match failed: previous pose moved by the odometry increment
+  ConstantMotion,  ///< the match failed, no odometry: previous pose moved by the last motion
+};
+const char* toString(TrackingSource s);
+
+struct TrackingStep
+{
+  mrpt::poses::CPose2D pose;      ///< vehicle pose of this scan in the map frame
+  size_t keyframe = 0;            ///< the keyframe `relative` refers to (the new one if made)
+  mrpt::poses::CPose2D relative;  ///< vehicle pose relative to that keyframe
+  plicp::MatchResult match;              ///< the match against the keyframe (status says if it failed)
+  TrackingSource source = TrackingSource::First;
+  bool new_keyframe = false;
+  std::vector<graph::Constraint> edges;  ///< the new node's edges
+  size_t dense_matches = 0;        ///< dense-neighbour matches tried for the new node
+  bool searched = false;           ///< the correlative search ran (source says if it won)
+  double match_time = 0;           ///< [s] spent matching against the keyframe (search included)
+  size_t valid_rays = 0;           ///< valid rays of this scan
+};
+
+class LocalTracker
+{
+ public:
+  LocalTracker(const TrackingParams& tracking, const plicp::PlicpParams& plicp,
+               const correlative::CorrelativeParams& correlative = correlative::CorrelativeParams());
+
+  /** Tracks one scan. `odometry_increment` is the vehicle motion since the previous scan, if
+   * known. The observation's geometry must have passed sensor::checkObservationGeometry, as
+   * every scan fed to SlamSystem has; a scan with few or no valid rays is tracked by the
+   * fallback. */
+  TrackingStep process(const mrpt::obs::CObservation2DRangeScan& obs,
+                       const std::optional<mrpt::poses::CPose2D>& odometry_increment = std::nullopt);
+
+  /** Moves a keyframe (after graph optimization); later scans are placed relative to it. */
+  void setKeyframePose(size_t id, const mrpt::poses::CPose2D& pose);
+
+  const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+
+ private:
+  Keyframe& addKeyframe(const sensor::Scan& scan, const mrpt::poses::CPose2D& pose);
+  std::optional<graph::Constraint> matchEdge(const Keyframe& from, const Keyframe& to, const sensor::Scan& scan,
+                                       graph::EdgeKind kind) const;
+  graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
+  bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
+  /** The match of `scan` against the last keyframe from `guess` (sensor frame), re-aligned by
+   * the correlative search when its prediction failed. */
+  plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, TrackingStep& step);
+  /** Rays of the last submap_keyframes keyframes in the last keyframe's sensor frame. */
+  std::vector<correlative::Ray> submapRays() const;
+
+  TrackingParams tracking_;
+  plicp::PlicpParams plicp_;
+  correlative::CorrelativeParams correlative_;
+  /** The score pyramid of the submap ending at the last keyframe, built the first time a scan
+   * is searched against that keyframe. */
+  std::shared_ptr<const correlative::ScorePyramid> search_pyramid_;
+  size_t search_pyramid_keyframe_ = 0;
+  std::vector<Keyframe> keyframes_;
+  mrpt::poses::CPose2D relative_;     ///< last scan's vehicle pose relative to the last keyframe
+  mrpt::poses::CPose2D last_motion_;  ///< vehicle motion between the last two scans
+  mrpt::Clock::time_point last_time_;  ///< the last scan's timestamp
+  double last_interval_ = 0;           ///< [s] between the last two scans (0: unknown)
+  size_t confirmed_in_a_row_ = 0;      ///< scans in a row whose match confirmed the prediction
+  SteadyMotion steady_;  ///< the recent motions, for the search's steady-motion prior
+};
+
+}  // namespace swslam::tracking

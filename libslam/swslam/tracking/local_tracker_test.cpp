@@ -1,0 +1,351 @@
+// Local tracking on a synthetic cluttered world along a known path.
+#include <swslam/tracking/local_tracker.h>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_support.h"
+
+using namespace swslam;
+using namespace swslam::tracking;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** Vehicle poses along a gentle S-curve at 1.5 m/s sampled at 20 Hz. */
+std::vector<CPose2D> sCurve(int n)
+{
+  std::vector<CPose2D> path;
+  for (int k = 0; k < n; k++)
+  {
+    const double t = 0.05 * k, x = -20 + 1.5 * t, y = -3 + 1.5 * std::sin(0.15 * x);
+    const double yaw = std::atan(1.5 * 0.15 * std::cos(0.15 * x));
+    path.emplace_back(x, y, yaw);
+  }
+  return path;
+}
+
+/** The scan a sensor mounted at `mount` takes at time t [s]. */
+mrpt::obs::CObservation2DRangeScan scanAt(const test::World& world, const CPose2D& vehicle,
+                                          const CPose2D& mount, double t, std::mt19937& rng)
+{
+  auto obs = test::simulateObservation(world, vehicle + mount, 541, 1.5 * M_PI, 30, 0.02, rng);
+  obs.sensorPose = mrpt::poses::CPose3D(mount);
+  obs.timestamp = mrpt::Clock::fromDouble(1000 + t);
+  return obs;
+}
+}  // namespace
+
+TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges)
+{
+  const auto world = test::clutteredWorld(5);
+  const CPose2D mount(0.3, 0.1, 0.05);
+  const auto path = sCurve(300);
+  std::mt19937 rng(1);
+  TrackingParams tp;
+  LocalTracker tracker(tp, plicp::PlicpParams());
+  std::vector<size_t> scan_of_keyframe;
+  size_t consecutive = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    const auto step = tracker.process(scanAt(world, path[k], mount, 0.05 * k, rng));
+    const CPose2D expected = (-path[0]) + path[k];  // the map frame is the first pose
+    EXPECT_NEAR(step.pose.x(), expected.x(), 0.1 + 0.002 * k) << "scan " << k;
+    EXPECT_NEAR(step.pose.y(), expected.y(), 0.1 + 0.002 * k) << "scan " << k;
+    if (k > 0) EXPECT_EQ(step.source, TrackingSource::Match) << step.match.message;
+    if (!step.new_keyframe) continue;
+    scan_of_keyframe.push_back(k);
+    for (const auto& e : step.edges)
+    {
+      EXPECT_NE(e.kind, graph::EdgeKind::OdometryPrior);
+      EXPECT_TRUE(e.information.allFinite());
+      // Every edge is the true relative vehicle pose between the two keyframes' scans.
+      const CPose2D truth = path[scan_of_keyframe.at(e.to)] - path[scan_of_keyframe.at(e.from)];
+      EXPECT_NEAR(e.z.x(), truth.x(), 0.03) << graph::edgeKindName(e.kind) << " " << e.from << "->" << e.to;
+      EXPECT_NEAR(e.z.y(), truth.y(), 0.03) << graph::edgeKindName(e.kind) << " " << e.from << "->" << e.to;
+      EXPECT_NEAR(e.z.phi(), truth.phi(), 0.01);
+      if (e.kind == graph::EdgeKind::Consecutive)
+      {
+        consecutive++;
+        EXPECT_EQ(e.from + 1, e.to);
+      }
+    }
+  }
+  const size_t keyframes = scan_of_keyframe.size();
+  EXPECT_GT(keyframes, 20u);  // 22 m travelled, a node every 0.5 m
+  EXPECT_EQ(consecutive, keyframes - 1);
+}
+
+TEST(LocalTracker, DenseEdgesConnectNearbyNodes)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(200);
+  std::mt19937 rng(2);
+  TrackingParams tp;
+  tp.dense_radius = 2.0;
+  LocalTracker tracker(tp, plicp::PlicpParams());
+  size_t dense = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    const auto step = tracker.process(scanAt(world, path[k], CPose2D(), 0.05 * k, rng));
+    for (const auto& e : step.edges)
+    {
+      if (e.kind != graph::EdgeKind::DenseNeighbour) continue;
+      dense++;
+      const auto& kfs = tracker.keyframes();
+      const CPose2D rel = kfs[e.to].pose - kfs[e.from].pose;
+      EXPECT_NEAR(e.z.x(), rel.x(), 0.05);
+      EXPECT_NEAR(e.z.y(), rel.y(), 0.05);
+      EXPECT_LE(rel.norm(), 2.0 + 0.1);
+    }
+  }
+  EXPECT_GT(dense, 10u);  // nodes 0.5 m apart within 2 m: several neighbours each
+}
+
+TEST(LocalTracker, ScansWithoutValidRaysFallBackAndSaySo)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(120);
+  std::mt19937 rng(3);
+  LocalTracker tracker{TrackingParams(), plicp::PlicpParams()};
+  size_t fallbacks = 0, priors = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    auto obs = scanAt(world, path[k], CPose2D(), 0.05 * k, rng);
+    const bool blind = k >= 40 && k < 70;  // 1.5 s of "open water"
+    if (blind)
+      for (size_t i = 0; i < obs.getScanSize(); i++) obs.setScanRangeValidity(i, false);
+    const auto step = tracker.process(obs);
+    if (blind)
+    {
+      EXPECT_EQ(step.source, TrackingSource::ConstantMotion);
+      EXPECT_EQ(step.match.status, plicp::MatchStatus::TooFewCorrespondences);
+      fallbacks++;
+    }
+    for (const auto& e : step.edges)
+    {
+      // Without a match no consecutive edge is made: a weak prior says what happened.
+      if (blind) EXPECT_NE(e.kind, graph::EdgeKind::Consecutive);
+      if (e.kind == graph::EdgeKind::OdometryPrior)
+      {
+        priors++;
+        EXPECT_LT(e.information(0, 0), 10.0);
+      }
+    }
+    const CPose2D expected = (-path[0]) + path[k];
+    EXPECT_NEAR(step.pose.x(), expected.x(), 0.3) << "scan " << k;
+  }
+  EXPECT_EQ(fallbacks, 30u);
+  EXPECT_GE(priors, 1u);
+}
+
+TEST(LocalTracker, OdometryIsTheFallbackWhenGiven)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(60);
+  std::mt19937 rng(4);
+  LocalTracker tracker{TrackingParams(), plicp::PlicpParams()};
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    auto obs = scanAt(world, path[k], CPose2D(), 0.05 * k, rng);
+    if (k == 30)
+      for (size_t i = 0; i < obs.getScanSize(); i++) obs.setScanRangeValidity(i, false);
+    const auto odo = k > 0 ? std::optional<CPose2D>(path[k] - path[k - 1]) : std::nullopt;
+    const auto step = tracker.process(obs, odo);
+    EXPECT_EQ(step.source, k == 0 ? TrackingSource::First
+                                  : (k == 30 ? TrackingSource::Odometry : TrackingSource::Match));
+  }
+}
+
+TEST(LocalTracker, MovedKeyframesMoveLaterScans)
+{
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(10);
+  std::mt19937 rng(5);
+  LocalTracker tracker{TrackingParams(), plicp::PlicpParams()};
+  tracker.process(scanAt(world, path[0], CPose2D(), 0.0, rng));
+  tracker.setKeyframePose(0, CPose2D(10, 0, 0));
+  const auto step = tracker.process(scanAt(world, path[1], CPose2D(), 0.05, rng));
+  EXPECT_NEAR(step.pose.x(), 10 + ((-path[0]) + path[1]).x(), 0.02);
+}
+
+namespace
+{
+/** Around an ellipse in the room, 0.5 m per scan, the heading swinging +-30 deg about the
+ * tangent from one scan to the next: turns of about 60 deg that alternate, so the last motion
+ * predicts the next one badly (as on the subsampled CARMEN logs). */
+std::vector<CPose2D> wigglingPath(int n)
+{
+  std::vector<CPose2D> path;
+  for (int k = 0; k < n; k++)
+  {
+    const double s = 0.1 * k, x = 6 * std::cos(s), y = 3.5 * std::sin(s);
+    const double tangent = std::atan2(3.5 * std::cos(s), -6 * std::sin(s));
+    path.emplace_back(x, y, tangent + (k % 2 ? 1 : -1) * 30 * M_PI / 180);
+  }
+  return path;
+}
+
+/** Largest position and heading error of a tracked path against the truth (first pose = origin). */
+std::pair<double, double> worstError(LocalTracker& tracker, const std::vector<CPose2D>& path,
+                                     size_t& searched)
+{
+  std::mt19937 rng(9);
+  const auto world = test::roomWorld();
+  double worst_xy = 0, worst_th = 0;
+  for (size_t k = 0; k < path.size(); k++)
+  {
+    auto obs = test::simulateObservation(world, path[k], 181, M_PI, 30, 0.02, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + 0.1 * k);
+    const auto step = tracker.process(obs);
+    searched += step.source == TrackingSource::Searched;
+    const CPose2D truth = (-path[0]) + path[k];
+    worst_xy = std::max(worst_xy, (step.pose.translation() - truth.translation()).norm());
+    worst_th = std::max(worst_th, std::abs(std::remainder(step.pose.phi() - truth.phi(), 2 * M_PI)));
+  }
+  return {worst_xy, worst_th};
+}
+}  // namespace
+
+TEST(LocalTracker, LargeUnpredictedTurnsAreTrackedByTheSearch)
+{
+  const auto path = wigglingPath(40);
+  size_t searched = 0;
+  LocalTracker tracker{TrackingParams(), plicp::PlicpParams(), correlative::CorrelativeParams()};
+  const auto [xy, th] = worstError(tracker, path, searched);
+  EXPECT_LT(xy, 0.15);
+  EXPECT_LT(th, 2 * M_PI / 180);
+  EXPECT_GT(searched, 10u);  // the turn alternates every scan
+
+  correlative::CorrelativeParams off;
+  off.enabled = false;
+  size_t none = 0;
+  LocalTracker plain(TrackingParams(), plicp::PlicpParams(), off);
+  const auto [xy_off, th_off] = worstError(plain, path, none);
+  EXPECT_EQ(none, 0u);
+  EXPECT_TRUE(xy_off > 0.5 || th_off > 10 * M_PI / 180)
+      << "PLICP from the last motion alone should lose this path (" << xy_off << " m, "
+      << th_off * 180 / M_PI << " deg)";
+}
+
+namespace
+{
+/** Along a corridor lined with posts every 0.4 m at 2 m/s, scans every 0.05 or 0.15 s in turn
+ * (as a loaded computer or a simulator may stamp them): steps of 0.1 and 0.3 m. The last step
+ * as the prediction is then 0.2 m off, half the posts' spacing, where PLICP can settle on the
+ * wrong post. Returns the worst change of the along-corridor error after the first 10 scans
+ * (the first steps, predicted from rest, may start a post off) [m]. */
+double corridorDrift(const TrackingParams& tp)
+{
+  auto world = test::corridorWorld();
+  for (double x = -10; x <= 60; x += 0.4) world.circles.push_back({x, 1.0, 0.1});
+  std::mt19937 rng(11);
+  LocalTracker tracker(tp, plicp::PlicpParams());
+  double t = 0, x = 0, worst = 0, start_error = 0;
+  for (int k = 0; k < 150; k++)
+  {
+    auto obs = test::simulateObservation(world, CPose2D(x, 0, 0), 541, 1.5 * M_PI, 8, 0.01, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + t);
+    const auto st = tracker.process(obs);
+    if (k == 10) start_error = st.pose.x() - x;
+    if (k >= 10) worst = std::max(worst, std::abs(st.pose.x() - x - start_error));
+    const double dt = k % 2 ? 0.15 : 0.05;
+    t += dt;
+    x += 2.0 * dt;
+  }
+  return worst;
+}
+}  // namespace
+
+TEST(LocalTracker, IrregularScanIntervalsArePredictedAtConstantVelocity)
+{
+  TrackingParams tp;
+  const double with = corridorDrift(tp);
+  tp.constant_velocity = false;
+  const double without = corridorDrift(tp);
+  EXPECT_LT(with, 0.1);
+  EXPECT_GT(without, 1.0) << "the last step as the prediction should lose this corridor";
+}
+
+namespace
+{
+/** Across the room at 1 m/s, 10 scans a second; at scan `shut` a door swings shut 0.6 m in
+ * front of the sensor and hides most of the room (the next keyframe then holds the door).
+ * Returns, for that scan and the next two, whether it was searched, and the worst position
+ * error among them [m]. */
+std::pair<std::vector<bool>, double> doorSwingsShut(const correlative::CorrelativeParams& cp, int shut)
+{
+  const auto room = test::roomWorld();
+  std::mt19937 rng(12);
+  LocalTracker tracker(TrackingParams(), plicp::PlicpParams(), cp);
+  std::vector<bool> searched;
+  double worst = 0;
+  for (int k = 0; k <= shut + 2; k++)
+  {
+    const CPose2D truth(-6 + 0.1 * k, -1, 0);
+    auto world = room;
+    const double door_x = -6 + 0.1 * shut + 0.6;
+    if (k >= shut) world.segments.push_back({door_x, -3.5, door_x, 1.5});
+    auto obs = test::simulateObservation(world, truth, 181, M_PI, 30, 0.01, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + 0.1 * k);
+    const auto step = tracker.process(obs);
+    if (k < shut) continue;
+    if (k == shut) EXPECT_LT(step.match.inliers, 0.5 * step.valid_rays) << "the door should hide most of the room";
+    searched.push_back(step.searched);
+    worst = std::max(worst, (step.pose.translation() - ((-CPose2D(-6, -1, 0)) + truth).translation()).norm());
+  }
+  return {searched, worst};
+}
+}  // namespace
+
+TEST(LocalTracker, AProvenPredictionIsKeptWhenTheSurroundingsChange)
+{
+  correlative::CorrelativeParams cp;  // trust_prediction_after = 10
+  const auto [searched, worst] = doorSwingsShut(cp, 30);
+  EXPECT_EQ(searched, std::vector<bool>({false, false, false}));
+  EXPECT_LT(worst, 0.05);
+  // Not yet proven (5 scans before the door), or never trusted: the little overlap alone
+  // calls for the search.
+  EXPECT_TRUE(doorSwingsShut(cp, 5).first.front());
+  cp.trust_prediction_after = 0;
+  EXPECT_TRUE(doorSwingsShut(cp, 30).first.front());
+}
+
+TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)
+{
+  // An older node moved by 0.6 m: its dense match from the (now wrong) estimate converges to
+  // the truth, 0.6 m from the guess, and the gate drops it.
+  const auto world = test::clutteredWorld(5);
+  const auto path = sCurve(60);
+  for (double gate : {0.3, 10.0})
+  {
+    std::mt19937 rng(6);
+    TrackingParams tp;
+    tp.dense_gate_xy = gate;
+    LocalTracker tracker(tp, plicp::PlicpParams());
+    size_t moved = 0, edges_to_moved = 0, dense = 0;
+    for (size_t k = 0; k < path.size(); k++)
+    {
+      if (k == 40)
+      {
+        moved = tracker.keyframes().size() - 2;
+        tracker.setKeyframePose(moved, tracker.keyframes()[moved].pose + CPose2D(0.6, 0, 0));
+      }
+      const auto step = tracker.process(scanAt(world, path[k], CPose2D(), 0.05 * k, rng));
+      for (const auto& e : step.edges)
+      {
+        if (e.kind != graph::EdgeKind::DenseNeighbour || k < 40) continue;
+        dense++;
+        edges_to_moved += e.from == moved;
+      }
+    }
+    EXPECT_GT(dense, 5u) << "gate " << gate;
+    if (gate < 1)
+      EXPECT_EQ(edges_to_moved, 0u);
+    else
+      EXPECT_GT(edges_to_moved, 0u);
+  }
+}
