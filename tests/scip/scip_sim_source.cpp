@@ -1,6 +1,7 @@
 #include "scip_sim_source.h"
 
 #include <swslam/sim/grid.h>
+#include <swslam/sim/scenario_check.h>
 #include <swslam/sim/sensor.h>
 #include <swslam/sim/terrain.h>
 #include <swslam/sim/vehicle.h>

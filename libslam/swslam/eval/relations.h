@@ -21,13 +21,6 @@ struct Relation
   bool planar = true;           ///< false if z, roll or pitch was not ~0 (dropped)
 };
 
-/** Reads a .relations file ('#' comments allowed). Throws std::runtime_error naming the
- * file and line on a malformed line. */
-std::vector<Relation> readRelations(const std::string& path);
-
-/** Formats relations as .relations text (z = roll = pitch = 0). */
-std::string formatRelations(const std::vector<Relation>& relations);
-
 struct RelationsResult
 {
   size_t used = 0;        ///< relations whose both stamps matched an estimated pose

@@ -1,4 +1,4 @@
-#include <swslam/eval/relations.h>
+#include <swslam/eval/relations_io.h>
 
 #include <swslam/common/number_rows.h>
 

@@ -1,4 +1,5 @@
 #include <swslam/eval/relations.h>
+#include <swslam/eval/relations_io.h>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
 #include <swslam/eval/report.h>
+#include <swslam/eval/relations_io.h>
 
 #include <mrpt/core/bits_math.h>
 

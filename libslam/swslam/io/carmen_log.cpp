@@ -245,4 +245,18 @@ double CarmenLogReader::fractionRead() const
   return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
 }
 
+size_t CarmenStats::timestampProblems() const
+{
+  size_t n = 0;
+  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps + t.negative;
+  return n;
+}
+
+size_t CarmenStats::scans() const
+{
+  size_t n = 0;
+  for (const auto& [label, s] : lasers) n += s.scans;
+  return n;
+}
+
 }  // namespace swslam::io

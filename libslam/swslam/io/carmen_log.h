@@ -5,9 +5,10 @@
 // laser offsets, FOV and maximum range. Rules (max range, FOV, timestamps): doc/carmen.md.
 
 #include <swslam/io/carmen_line.h>
+#include <swslam/io/carmen_params.h>
 #include <swslam/io/carmen_rules.h>
+#include <swslam/io/carmen_scan.h>
 
-#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -21,65 +22,6 @@
 
 namespace swslam::io
 {
-/** Converter options, .ini section [carmen]. */
-struct CarmenParams : public mrpt::config::CLoadableOptions
-{
-  /** [m] if > 0: the maximum range of every laser, overriding the log; 0: from the line's
-   * own field, else PARAM robot_*_laser_max, else saturation auto-detection. */
-  double max_range = 0;
-  /** Saturation cluster: readings within this fraction below the largest reading. */
-  double saturation_rel_tol = 0.005;
-  /** Minimum readings in the cluster for a laser to count as saturating. */
-  uint64_t saturation_min_count = 5;
-  /** Replace non-increasing (and jumping) timestamps by previous + median period. */
-  bool repair_timestamps = false;
-  /** [s] a forward step larger than this is a timestamp problem (e.g. 2^32 overflow). */
-  double max_timestamp_gap = 3600;
-  /** [s] repair period of a stream with no usable positive period. */
-  double default_period = 0.1;
-  /** Drop ODOM lines. */
-  bool laser_only = false;
-  /** Warnings printed per kind (malformed line, timestamp); all are counted. */
-  uint64_t max_printed_warnings = 5;
-
-  /** Throws std::invalid_argument naming the first key out of its range. */
-  void check() const;
-
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                          const std::string& section) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
-                        const std::string& section) const override;
-};
-
-/** How one laser line becomes a scan. */
-struct CarmenScanGeometry
-{
-  mrpt::poses::CPose2D sensor_pose;  ///< on the robot, including a start-angle offset
-  double aperture = M_PI;            ///< MRPT aperture: first to last beam [rad]
-  double max_range = 0;              ///< readings >= this are invalid ("no return") [m]
-  std::string max_range_source;      ///< which rule gave max_range
-  std::string warning;               ///< non-empty: an inconsistency worth reporting
-};
-
-/** Numeric PARAM values read so far, by name. */
-using CarmenLogParams = std::map<std::string, double>;
-
-/** Geometry of a laser line: sensor pose, aperture and max range, by the rules of
- * doc/carmen.md. `saturation` is the detected saturation value of this laser (if any)
- * and `largest` its largest reading in the whole log. */
-CarmenScanGeometry carmenScanGeometry(const CarmenLaser& laser, const CarmenLogParams& log_params,
-                                      const CarmenParams& params,
-                                      std::optional<double> saturation, double largest);
-
-/** True for the PARAM names that carmenScanGeometry() reads (offsets, FOV, resolution,
- * max range of the front and rear lasers); their values must be numbers. */
-bool carmenParamIsUsed(const std::string& name);
-
-/** The MRPT scan of a laser line: rays invalid when non-finite, <= 0 or >= max_range. */
-mrpt::obs::CObservation2DRangeScan::Ptr carmenScan(const CarmenLaser& laser,
-                                                   const CarmenScanGeometry& geometry,
-                                                   double timestamp);
-
 /** Per-laser figures of a conversion. */
 struct CarmenSensorStats
 {

@@ -1,4 +1,4 @@
-#include <swslam/io/carmen_log.h>
+#include <swslam/io/carmen_params.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -44,19 +44,4 @@ void CarmenParams::check() const
   if (!(max_timestamp_gap > 0)) fail("max_timestamp_gap", "> 0");
   if (!(default_period > 0)) fail("default_period", "> 0");
 }
-
-size_t CarmenStats::timestampProblems() const
-{
-  size_t n = 0;
-  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps + t.negative;
-  return n;
-}
-
-size_t CarmenStats::scans() const
-{
-  size_t n = 0;
-  for (const auto& [label, s] : lasers) n += s.scans;
-  return n;
-}
-
 }  // namespace swslam::io

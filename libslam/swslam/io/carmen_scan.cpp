@@ -1,4 +1,4 @@
-#include <swslam/io/carmen_log.h>
+#include <swslam/io/carmen_scan.h>
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/poses/CPose3D.h>

@@ -1,4 +1,5 @@
 #include <swslam/sim/scenario.h>
+#include <swslam/sim/scenario_check.h>
 
 #include <swslam/common/config_keys.h>
 #include <swslam/common/ini_file.h>

@@ -128,8 +128,6 @@ Scenario loadScenario(const std::string& path);
 /** The scenario as .ini text that loadScenario() reads back (the name is not stored). */
 std::string formatScenario(const Scenario& s);
 
-/** Checks values (ranges, sensor geometry) without the world; throws naming the key. */
-void validateScenario(const Scenario& s);
 
 /** Parses "x y, x y, ..." (at least two points). Throws std::invalid_argument. */
 std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text);

@@ -1,5 +1,5 @@
 // Value checks of a scenario: ranges and the sensor's geometry, each error naming its key.
-#include <swslam/sim/scenario.h>
+#include <swslam/sim/scenario_check.h>
 
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>

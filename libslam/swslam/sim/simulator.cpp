@@ -1,4 +1,5 @@
 #include <swslam/sim/simulator.h>
+#include <swslam/sim/scenario_check.h>
 
 #include <swslam/common/atomic_file.h>
 #include <swslam/sim/grid.h>

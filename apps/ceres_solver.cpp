@@ -1,46 +1,17 @@
-#include "bench_graph_solvers.h"
+#include "ceres_solver.h"
 
 #include <swslam/graph/sliding_window.h>
 
 #include <ceres/ceres.h>
-#include <mrpt/graphslam/levmarq.h>
-#include <mrpt/system/CTicTac.h>
 
 #include <Eigen/Dense>
 
-#include <algorithm>
-#include <ctime>
 #include <functional>
 #include <unordered_map>
 #include <vector>
 
 namespace
 {
-double processCpuSeconds()
-{
-  timespec t;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-/** Median wall and CPU time of `repeats` calls of `run`, stored in `out`. */
-void timeRuns(int repeats, const std::function<void()>& run, SolverRun& out)
-{
-  std::vector<double> wall, cpu;
-  for (int k = 0; k < repeats; ++k)
-  {
-    mrpt::system::CTicTac timer;
-    const double cpu0 = processCpuSeconds();
-    run();
-    wall.push_back(timer.Tac());
-    cpu.push_back(processCpuSeconds() - cpu0);
-  }
-  std::sort(wall.begin(), wall.end());
-  std::sort(cpu.begin(), cpu.end());
-  out.time_s = wall[wall.size() / 2];
-  out.cpu_s = cpu[cpu.size() / 2];
-}
-
 /** Same residual as swslam::se2Error, times the square root of the information. */
 struct RelativePoseCost
 {
@@ -68,42 +39,12 @@ struct RelativePoseCost
 };
 }  // namespace
 
-double chi2Of(const swslam::graph::PoseGraph& graph)
+swslam::bench::SolverRun runCeres(const swslam::graph::PoseGraph& graph, int repeats)
 {
-  return swslam::graph::graphChi2(swslam::graph::fullSubproblem(graph, {}).problem);
-}
-
-SolverRun runOurs(const swslam::graph::PoseGraph& graph, const swslam::graph::GraphOptimizerParams& params,
-                  int repeats)
-{
-  SolverRun run{"swslam", 0, 0, 0, graph};
-  timeRuns(repeats, [&] {
-    run.result = graph;
-    run.iterations = swslam::graph::optimizeFull(run.result, params).iterations;
-  }, run);
-  return run;
-}
-
-SolverRun runMrpt(const swslam::graph::PoseGraph& graph, int repeats)
-{
-  SolverRun run{"mrpt-levmarq", 0, 0, 0, graph};
-  mrpt::graphs::CNetworkOfPoses2DInf net;
-  timeRuns(repeats, [&] {
-    net = graph.network();
-    mrpt::graphslam::TResultInfoSpaLevMarq info;
-    mrpt::graphslam::optimize_graph_spa_levmarq(net, info);
-    run.iterations = info.num_iters;
-  }, run);
-  for (const auto& [id, pose] : net.nodes) run.result.setPose(id, pose);
-  return run;
-}
-
-SolverRun runCeres(const swslam::graph::PoseGraph& graph, int repeats)
-{
-  SolverRun run{"ceres", 0, 0, 0, graph};
+  swslam::bench::SolverRun run{"ceres", 0, 0, 0, graph};
   const std::vector<swslam::graph::PoseGraph::TNodeID> ids = graph.nodeIds();
   std::vector<double> x;
-  timeRuns(repeats, [&] {
+  swslam::bench::timeSolver(repeats, [&] {
     x.clear();
     std::unordered_map<swslam::graph::PoseGraph::TNodeID, size_t> index;
     for (const auto id : ids)
