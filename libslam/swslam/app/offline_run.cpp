@@ -89,6 +89,15 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
     err << "swslam: " << slam->error() << "\n";
     if (code == kExitOk) code = kExitModuleError;
   }
+  // A run that tracked no scan has nothing to write: say why instead of an empty map.
+  if (slam->status().scans == 0 && !stop.requested())
+  {
+    const std::string why = read == 0 ? io::noScanReason(source->stats(), opts.sensor_label)
+                                      : "none of its " + std::to_string(read) + " scans could be used (see above)";
+    err << "swslam: " << source->describe() << ": " << (why.empty() ? "no scan was tracked" : why)
+        << "; nothing written\n";
+    return code == kExitOk ? kExitInputError : code;
+  }
 
   const system::RunResults results = slam->results();
   const mrpt::maps::COccupancyGridMap2D grid = slam->mapSnapshot();
@@ -103,8 +112,9 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   }
   catch (const std::exception& e)
   {
-    err << "swslam: ground truth: " << e.what() << "\n";
+    err << "swslam: ground truth: " << e.what() << "; the outputs are written without ATE and RPE\n";
     summary = summarizeRun(results, wall);
+    if (code == kExitOk) code = kExitInputError;
   }
   std::string text = "# swslam on " + source->describe() + " (" +
                      (opts.deterministic ? "deterministic" : "threaded") + ")\n" + system::formatRunSummary(summary);

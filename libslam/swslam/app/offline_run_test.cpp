@@ -5,9 +5,13 @@
 #include <swslam/map/octomap_export.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/app/offline_run.h>
+#include <swslam/common/tum_io.h>
 
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
 #include <octomap/OcTree.h>
 
 #include <filesystem>
@@ -126,5 +130,67 @@ TEST(OfflineRun, TruncatedRawlogStillWritesWhatWasMapped)
   const auto trajectory = common::readTum(o.output + "/trajectory.tum");
   EXPECT_GT(trajectory.size(), 300u);
   EXPECT_GT(map::countOccupied(map::readGridmap(o.output + "/map.gridmap.gz"), 0.65), 50u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OfflineRun, ARunThatTracksNoScanSaysWhyAndWritesNothing)
+{
+  const std::string src = SWSLAM_SOURCE_DIR, dir = test::tempDir("offline_empty");
+  OfflineRunOptions o;
+  o.config = src + "/config/default.ini";
+  o.input = src + "/datasets/lake-short/lake-short.rawlog";
+  o.output = dir + "/out";
+  o.deterministic = true;
+  o.render = false;
+  o.sensor_label = "NO_SUCH_LASER";
+  std::ostringstream out, err;
+  EXPECT_EQ(runOffline(o, out, err), kExitInputError);
+  // The labels the log has, with their counts.
+  EXPECT_NE(err.str().find("no scan of sensor 'NO_SUCH_LASER'; the log's laser scans are of '"), std::string::npos)
+      << err.str();
+  EXPECT_NE(err.str().find("(2461 scans)"), std::string::npos) << err.str();
+  EXPECT_FALSE(std::filesystem::exists(o.output + "/trajectory.tum"));
+  EXPECT_FALSE(std::filesystem::exists(o.output + "/graph.graph"));
+
+  // A rawlog of odometry only.
+  o.sensor_label.clear();
+  o.input = dir + "/odometry-only.rawlog";
+  {
+    mrpt::io::CFileGZOutputStream f(o.input);
+    auto arch = mrpt::serialization::archiveFrom(f);
+    for (int k = 0; k < 3; k++)
+    {
+      auto odo = mrpt::obs::CObservationOdometry::Create();
+      odo->timestamp = mrpt::Clock::fromDouble(100.0 + k);
+      odo->odometry = mrpt::poses::CPose2D(0.1 * k, 0, 0);
+      arch << *odo;
+    }
+  }
+  err.str("");
+  EXPECT_EQ(runOffline(o, out, err), kExitInputError);
+  EXPECT_NE(err.str().find("no laser scan"), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("3 odometry readings"), std::string::npos) << err.str();
+  EXPECT_FALSE(std::filesystem::exists(o.output + "/trajectory.tum"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OfflineRun, AGroundTruthThatDoesNotOverlapTheRunIsAnErrorAfterTheOutputs)
+{
+  const std::string src = SWSLAM_SOURCE_DIR, dir = test::tempDir("offline_gt");
+  auto truth = common::readTum(src + "/datasets/lake-short/lake-short.gt.tum");
+  for (auto& p : truth) p.t += 1e6;  // a day and a half later
+  common::writeTum(dir + "/later.tum", truth);
+  OfflineRunOptions o;
+  o.config = src + "/config/default.ini";
+  o.input = src + "/datasets/lake-short/lake-short.rawlog";
+  o.ground_truth = dir + "/later.tum";
+  o.output = dir + "/out";
+  o.deterministic = true;
+  o.render = false;
+  o.max_scans = 200;
+  std::ostringstream out, err;
+  EXPECT_EQ(runOffline(o, out, err), kExitInputError);
+  EXPECT_NE(err.str().find("ground truth: "), std::string::npos) << err.str();
+  EXPECT_EQ(common::readTum(o.output + "/trajectory.tum").size(), 200u);
   std::filesystem::remove_all(dir);
 }

@@ -83,6 +83,7 @@ class SourceBase : public ScanSource
       if (scan->sensorLabel != label_)
       {
         stats_.other_sensors++;
+        stats_.other_labels[scan->sensorLabel]++;
         return false;
       }
       out.observation = scan;
@@ -156,6 +157,24 @@ class CarmenSource : public SourceBase
   CarmenLogReader reader_;
 };
 
+}  // namespace
+
+std::string noScanReason(const ScanSourceStats& stats, const std::string& sensor_label)
+{
+  if (stats.scans > 0) return "";
+  if (!stats.other_labels.empty())
+  {
+    std::string labels;
+    for (const auto& [label, count] : stats.other_labels)
+      labels += (labels.empty() ? "" : ", ") + ("'" + label + "' (" + std::to_string(count) + " scans)");
+    return "no scan of sensor '" + sensor_label + "'; the log's laser scans are of " + labels;
+  }
+  return "no laser scan (CObservation2DRangeScan or CARMEN laser line) in it: " + std::to_string(stats.odometry) +
+         " odometry readings, " + std::to_string(stats.other_observations) + " other observations";
+}
+
+namespace
+{
 bool endsWith(const std::string& s, const std::string& suffix)
 {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;

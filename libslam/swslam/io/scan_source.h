@@ -10,6 +10,7 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +28,7 @@ struct ScanSourceStats
 {
   size_t scans = 0;              ///< scans returned
   size_t other_sensors = 0;      ///< scans of another sensor label, skipped
+  std::map<std::string, size_t> other_labels;  ///< those scans, by sensor label
   size_t other_observations = 0; ///< observations that are neither scans nor odometry
   size_t odometry = 0;           ///< odometry readings/actions used
 };
@@ -43,6 +45,10 @@ class ScanSource
   /** Fraction of the input read, in [0, 1]. */
   virtual double fractionRead() const = 0;
 };
+
+/** Why a source gave no scan: the labels it skipped (when a sensor label was asked for), or
+ * that it held no laser scan at all. Empty if it gave scans. */
+std::string noScanReason(const ScanSourceStats& stats, const std::string& sensor_label);
 
 /** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), else as a
  * rawlog. Throws std::runtime_error if it cannot be opened. */

@@ -156,6 +156,18 @@ TEST(ScanSource, OtherSensorsAreSkippedAndCounted)
   EXPECT_FALSE(src->next(in));
   EXPECT_EQ(src->stats().scans, 0u);
   EXPECT_GT(src->stats().other_sensors, 2000u);
+  // By label, and named when nothing of the asked sensor was found.
+  ASSERT_EQ(src->stats().other_labels.size(), 1u);
+  const auto& [label, count] = *src->stats().other_labels.begin();
+  EXPECT_EQ(count, src->stats().other_sensors);
+  const std::string why = noScanReason(src->stats(), "NO_SUCH_LASER");
+  EXPECT_NE(why.find("no scan of sensor 'NO_SUCH_LASER'"), std::string::npos) << why;
+  EXPECT_NE(why.find("'" + label + "' (" + std::to_string(count) + " scans)"), std::string::npos) << why;
+  ScanSourceStats none;
+  none.odometry = 4;
+  EXPECT_NE(noScanReason(none, "").find("no laser scan"), std::string::npos);
+  none.scans = 1;
+  EXPECT_EQ(noScanReason(none, ""), "");
 }
 
 TEST(ScanSource, MissingFileIsAnErrorNamingIt)
