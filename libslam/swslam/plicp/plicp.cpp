@@ -68,13 +68,13 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
   // Iterate on every k-th ray (dense sensors), then one step with all of them.
-  const size_t stride = plicp::decimationStride(cur, params.point_spacing);
-  const sensor::Scan sub = stride > 1 ? plicp::decimated(cur, stride) : sensor::Scan();
+  const size_t stride = decimationStride(cur, params.point_spacing);
+  const sensor::Scan sub = stride > 1 ? decimated(cur, stride) : sensor::Scan();
   const bool thin = sub.size() >= min_n;
-  plicp::IcpRun run = plicp::runWithRetries(reference, thin ? sub : cur, x0, params);
+  IcpRun run = runWithRetries(reference, thin ? sub : cur, x0, params);
   const bool run_ok =
       run.status == MatchStatus::Converged || run.status == MatchStatus::MaxIterations;
-  const bool full = !thin || (run_ok && plicp::fullResolutionStep(reference, cur, params, run));
+  const bool full = !thin || (run_ok && fullResolutionStep(reference, cur, params, run));
   const sensor::Scan& used = full ? cur : sub;  // the scan run.kept indexes
   res.cur_valid_rays = used.size();     // so that correspondences / cur_valid_rays stays a fraction
   res.iterations = run.iterations;
@@ -88,8 +88,8 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
     return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
 
   // Residuals and covariance (eq. 4-10) at the final estimate.
-  const auto cur_in_ref = plicp::transformed(used, x);
-  const auto errors = plicp::lineErrors(reference, cur_in_ref, kept);
+  const auto cur_in_ref = transformed(used, x);
+  const auto errors = lineErrors(reference, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
   for (double e : errors)
@@ -97,7 +97,7 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
     res.sum_sq_residuals += e * e;
     if (e < 3 * params.range_sigma) res.inliers++;
   }
-  std::vector<plicp::CovarianceTerm> cov_terms;
+  std::vector<CovarianceTerm> cov_terms;
   cov_terms.reserve(kept.size());
   for (const auto& k : kept)
   {
@@ -105,10 +105,10 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
     cov_terms.push_back({dir(used, k.i), dir(ref, k.j1), dir(ref, k.j2), used.ranges[k.i],
                          ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
   }
-  res.covariance = plicp::plicpCovariance(cov_terms, x, params.range_sigma);
+  res.covariance = plicpCovariance(cov_terms, x, params.range_sigma);
   if (params.covariance_from_residuals)
   {
-    res.variance_factor = plicp::residualVarianceFactor(res.sum_sq_residuals, kept.size(), params.range_sigma);
+    res.variance_factor = residualVarianceFactor(res.sum_sq_residuals, kept.size(), params.range_sigma);
     res.covariance *= res.variance_factor;
   }
   return res;

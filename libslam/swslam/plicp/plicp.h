@@ -44,7 +44,7 @@ struct MatchResult
 struct ReferenceScan
 {
   sensor::Scan scan;
-  plicp::ReferenceIndex index;
+  ReferenceIndex index;
   explicit ReferenceScan(sensor::Scan s, const PlicpParams& params = PlicpParams())
       : scan(std::move(s)), index(scan, params.min_segment_length)
   {
