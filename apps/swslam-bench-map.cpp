@@ -2,8 +2,8 @@
 // reference poses; optionally writes the map outputs of the result.
 #include "cli.h"
 #include <swslam/bench/map_builder.h>
-#include <swslam/map/outputs.h>
 #include <swslam/common/tum_io.h>
+#include <swslam/map/outputs.h>
 #include <swslam/system/config.h>
 
 

@@ -2,10 +2,10 @@
 // 0.1 m for the offline map (see doc/system.md).
 #include "cli.h"
 
-#include <swslam/graph/io.h>
-#include <swslam/map/outputs.h>
 #include <swslam/app/regen_map.h>
 #include <swslam/app/run_outputs.h>
+#include <swslam/graph/io.h>
+#include <swslam/map/outputs.h>
 #include <swslam/system/config.h>
 
 #include <iostream>

@@ -1,8 +1,8 @@
 #include <swslam/app/eval_command.h>
 
 #include <swslam/eval/consistency.h>
-#include <swslam/eval/relations_io.h>
 #include <swslam/eval/laser_optimum.h>
+#include <swslam/eval/relations_io.h>
 #include <swslam/eval/report.h>
 #include <swslam/system/config.h>
 

@@ -1,14 +1,14 @@
 #include <swslam/app/live_run.h>
 
-#include <swslam/io/hokuyo_link.h>
 #include <swslam/app/exit_codes.h>
-#include <swslam/common/ini_file.h>
 #include <swslam/app/progress_bar.h>
-#include <swslam/io/rawlog_recorder.h>
 #include <swslam/app/run_outputs.h>
 #include <swslam/app/skip_reporter.h>
-#include <swslam/system/slam_system.h>
 #include <swslam/app/stop_signal.h>
+#include <swslam/common/ini_file.h>
+#include <swslam/io/hokuyo_link.h>
+#include <swslam/io/rawlog_recorder.h>
+#include <swslam/system/slam_system.h>
 
 
 #include <chrono>

@@ -3,11 +3,11 @@
 #include "scip/scip_emulator.h"
 #include "scip/scip_sim_source.h"
 
+#include <swslam/app/live_run.h>
+#include <swslam/app/offline_run.h>
 #include <swslam/eval/report.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/sim/scenario.h>
-#include <swslam/app/live_run.h>
-#include <swslam/app/offline_run.h>
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 #include <swslam/app/offline_run.h>
 
-#include <swslam/io/rawlog_reader.h>
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
-#include <swslam/io/scan_source.h>
 #include <swslam/app/skip_reporter.h>
-#include <swslam/system/slam_system.h>
 #include <swslam/app/stop_signal.h>
 #include <swslam/eval/report.h>
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/io/scan_source.h>
+#include <swslam/system/slam_system.h>
 
 #include <chrono>
 #include <malloc.h>

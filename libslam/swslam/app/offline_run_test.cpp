@@ -1,11 +1,11 @@
 // End to end: the `swslam` app's code on the bundled lake-short log; every output loads back.
-#include <swslam/eval/report.h>
-#include <swslam/graph/io.h>
-#include <swslam/map/files.h>
-#include <swslam/map/octomap_export.h>
-#include <swslam/io/rawlog_reader.h>
 #include <swslam/app/offline_run.h>
 #include <swslam/common/tum_io.h>
+#include <swslam/eval/report.h>
+#include <swslam/graph/io.h>
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/map/files.h>
+#include <swslam/map/octomap_export.h>
 
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>

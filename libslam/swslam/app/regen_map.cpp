@@ -1,7 +1,7 @@
 #include <swslam/app/regen_map.h>
 
-#include <swslam/map/builder.h>
 #include <swslam/io/scan_source.h>
+#include <swslam/map/builder.h>
 
 #include <cmath>
 #include <stdexcept>

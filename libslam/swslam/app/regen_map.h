@@ -2,10 +2,10 @@
 // Rebuilds a finished run's occupancy map from its graph and its input log, e.g. at a finer
 // resolution than the online map (the paper's offline 0.1 m map, Fig. 4).
 
+#include <swslam/common/tum_io.h>
+#include <swslam/graph/pose_graph.h>
 #include <swslam/io/carmen_log.h>
 #include <swslam/map/params.h>
-#include <swslam/graph/pose_graph.h>
-#include <swslam/common/tum_io.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 

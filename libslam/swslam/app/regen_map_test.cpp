@@ -1,7 +1,7 @@
 // Rebuilding a run's map from its graph and the log, at another resolution.
-#include <swslam/map/octomap_export.h>
 #include <swslam/app/regen_map.h>
 #include <swslam/io/scan_source.h>
+#include <swslam/map/octomap_export.h>
 #include <swslam/system/slam_system.h>
 
 #include <gtest/gtest.h>

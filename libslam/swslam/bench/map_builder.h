@@ -2,8 +2,8 @@
 // Benchmark of map construction on a log with reference poses: insertion, update of a moved
 // node, re-insertion of every node after a "loop closure", snapshot copies, memory.
 
-#include <swslam/map/builder.h>
 #include <swslam/io/scans_with_truth.h>
+#include <swslam/map/builder.h>
 
 #include <string>
 

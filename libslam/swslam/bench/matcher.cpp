@@ -1,10 +1,10 @@
 #include <swslam/bench/matcher.h>
 
-#include <swslam/plicp/correspondences.h>
-#include <swslam/plicp/run.h>
-#include <swslam/io/rawlog_reader.h>
 #include <swslam/correlative/searched_match.h>
 #include <swslam/geometry/sensor_frame.h>
+#include <swslam/io/rawlog_reader.h>
+#include <swslam/plicp/correspondences.h>
+#include <swslam/plicp/run.h>
 
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/slam/CICP.h>

@@ -4,8 +4,8 @@
 // reference relative pose. Used by apps/swslam-bench-matcher.
 
 #include <swslam/correlative/params.h>
-#include <swslam/plicp/plicp.h>
 #include <swslam/io/scans_with_truth.h>
+#include <swslam/plicp/plicp.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 

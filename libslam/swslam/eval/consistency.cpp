@@ -1,10 +1,10 @@
 #include <swslam/eval/consistency.h>
 
-#include <swslam/io/carmen_log.h>
 #include <swslam/eval/association.h>
+#include <swslam/io/carmen_log.h>
+#include <swslam/io/scan_source.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/plicp/run.h>
-#include <swslam/io/scan_source.h>
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 // pairs tells which of them the scans support, e.g. an estimate against a reference that is
 // itself the output of another SLAM system.
 
+#include <swslam/common/tum_io.h>
 #include <swslam/io/carmen_log.h>
 #include <swslam/sensor/scan.h>
-#include <swslam/common/tum_io.h>
 
 #include <mrpt/poses/CPose2D.h>
 

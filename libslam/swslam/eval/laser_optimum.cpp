@@ -1,11 +1,11 @@
 #include <swslam/eval/laser_optimum.h>
 #include <swslam/geometry/information.h>
 
-#include <swslam/graph/edge_kind.h>
 #include <swslam/eval/ate.h>
 #include <swslam/eval/consistency.h>
-#include <swslam/loop/closer.h>
 #include <swslam/geometry/pose_threshold.h>
+#include <swslam/graph/edge_kind.h>
+#include <swslam/loop/closer.h>
 #include <swslam/tracking/local_tracker.h>
 
 #include <cmath>

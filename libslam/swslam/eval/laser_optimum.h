@@ -6,13 +6,13 @@
 // sensors (odometry), or in a place the laser data leaves open, moves by what the scans
 // disagree with. No tracking decision is involved: only the trajectory given and the scans.
 
-#include <swslam/io/carmen_log.h>
+#include <swslam/common/tum_io.h>
 #include <swslam/graph/optimizer.h>
+#include <swslam/io/carmen_log.h>
 #include <swslam/loop/params.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/sensor/scan.h>
 #include <swslam/tracking/params.h>
-#include <swslam/common/tum_io.h>
 
 #include <mrpt/poses/CPose2D.h>
 

@@ -5,8 +5,8 @@
 // (x_j (-) x_i) (-) delta*_ij of the estimate, summarized by the mean and standard
 // deviation of its absolute and squared translational and rotational parts.
 
-#include <swslam/eval/error_stats.h>
 #include <swslam/common/tum_io.h>
+#include <swslam/eval/error_stats.h>
 
 #include <string>
 #include <vector>

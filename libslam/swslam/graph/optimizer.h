@@ -4,8 +4,8 @@
 // relative-pose edges with information matrices. The normal equations are sparse (3x3
 // blocks) and solved by Eigen's simplicial LDL^T with AMD ordering.
 
-#include <swslam/graph/optimizer_params.h>
 #include <swslam/geometry/se2_error.h>
+#include <swslam/graph/optimizer_params.h>
 
 #include <string>
 #include <vector>

@@ -5,8 +5,8 @@
 // an optional share of wrong loop edges (random node pairs with a plausible-looking but
 // false measurement).
 
-#include <swslam/graph/pose_graph.h>
 #include <swslam/geometry/se2_error.h>
+#include <swslam/graph/pose_graph.h>
 
 #include <vector>
 

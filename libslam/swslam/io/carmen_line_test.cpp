@@ -1,8 +1,8 @@
 // Parsing of single CARMEN lines, and the saturation and timestamp rules.
 #include <swslam/io/carmen_line.h>
+#include <swslam/common/config_keys.h>
 #include <swslam/io/carmen_log.h>
 #include <swslam/io/carmen_rules.h>
-#include <swslam/common/config_keys.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 

@@ -1,9 +1,9 @@
 // CARMEN log conversion end to end, on a small excerpt in the real formats written here.
+#include <swslam/common/tum_io.h>
 #include <swslam/io/carmen2rawlog.h>
 #include <swslam/io/rawlog_reader.h>
-#include <swslam/sensor/scan.h>
 #include <swslam/io/scan_source.h>
-#include <swslam/common/tum_io.h>
+#include <swslam/sensor/scan.h>
 
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservationOdometry.h>

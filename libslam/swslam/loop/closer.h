@@ -8,10 +8,10 @@
 // whole graph. Pure functions: no threads, no config reading.
 
 #include <swslam/correlative/params.h>
+#include <swslam/graph/constraint.h>
+#include <swslam/graph/pose_graph.h>
 #include <swslam/loop/params.h>
 #include <swslam/plicp/plicp.h>
-#include <swslam/graph/pose_graph.h>
-#include <swslam/graph/constraint.h>
 
 #include <mrpt/poses/CPose2D.h>
 

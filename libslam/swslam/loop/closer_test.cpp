@@ -1,8 +1,8 @@
 // Loop closure: candidate selection on plain graphs, verification of revisits on a
 // synthetic cluttered scene (fixed seeds), the gate's arithmetic, and the parameters.
 #include <swslam/common/config_keys.h>
-#include <swslam/loop/closer.h>
 #include <swslam/geometry/sensor_frame.h>
+#include <swslam/loop/closer.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/poses/CPose3D.h>

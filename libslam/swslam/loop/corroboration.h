@@ -4,9 +4,9 @@
 // verified loops of the last `consistency_window` nodes wait here for a partner. Owned by the
 // graph module's thread; not thread-safe.
 
-#include <swslam/loop/params.h>
-#include <swslam/loop/consistency.h>
 #include <swslam/graph/constraint.h>
+#include <swslam/loop/consistency.h>
+#include <swslam/loop/params.h>
 
 #include <mrpt/poses/CPose2D.h>
 

@@ -9,10 +9,10 @@
 // caller adds the accepted edges (kind Loop) and optimizes the whole graph again.
 // Pure functions: no threads, no config reading.
 
-#include <swslam/loop/final_refinement_params.h>
-#include <swslam/loop/closer.h>
-#include <swslam/plicp/plicp.h>
 #include <swslam/graph/pose_graph.h>
+#include <swslam/loop/closer.h>
+#include <swslam/loop/final_refinement_params.h>
+#include <swslam/plicp/plicp.h>
 
 #include <functional>
 #include <utility>

@@ -3,9 +3,9 @@
 #include "sim_test_scenario.h"
 #include "test_support.h"
 
+#include <swslam/sim/simulator.h>
 #include <swslam/sim/terrain.h>
 #include <swslam/sim/vehicle.h>
-#include <swslam/sim/simulator.h>
 
 #include <gtest/gtest.h>
 

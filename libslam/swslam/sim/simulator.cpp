@@ -2,12 +2,12 @@
 #include <swslam/sim/scenario_check.h>
 
 #include <swslam/common/atomic_file.h>
+#include <swslam/common/tum_io.h>
 #include <swslam/sim/grid.h>
 #include <swslam/sim/sensor.h>
 #include <swslam/sim/terrain.h>
 #include <swslam/sim/vehicle.h>
 #include <swslam/sim/writer.h>
-#include <swslam/common/tum_io.h>
 
 #include <mrpt/core/format.h>
 #include <mrpt/io/CFileGZOutputStream.h>

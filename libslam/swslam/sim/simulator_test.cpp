@@ -4,12 +4,12 @@
 #include "sim_test_scenario.h"
 #include "test_support.h"
 
+#include <swslam/common/tum_io.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/sensor/scan.h>
+#include <swslam/sim/simulator.h>
 #include <swslam/sim/terrain.h>
 #include <swslam/sim/vehicle.h>
-#include <swslam/sim/simulator.h>
-#include <swslam/common/tum_io.h>
 
 #include <mrpt/obs/CObservationOdometry.h>
 

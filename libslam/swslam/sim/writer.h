@@ -2,8 +2,8 @@
 // Output files of the simulator besides the rawlog: the ground truth in MRPT's text
 // format and a top view of the world with the ground-truth path. Written atomically.
 
-#include <swslam/sim/world.h>
 #include <swslam/common/tum_io.h>
+#include <swslam/sim/world.h>
 
 #include <mrpt/img/CImage.h>
 

@@ -2,9 +2,9 @@
 // The parameters of every module, loaded from one .ini file (config/default.ini): one
 // section per module, strictly (unknown sections and keys are errors naming them).
 
-#include <swslam/io/carmen_log.h>
 #include <swslam/correlative/params.h>
 #include <swslam/graph/optimizer_params.h>
+#include <swslam/io/carmen_log.h>
 #include <swslam/loop/final_refinement_params.h>
 #include <swslam/loop/params.h>
 #include <swslam/map/params.h>

@@ -1,7 +1,7 @@
 #include <swslam/system/graph_module.h>
 
-#include <swslam/loop/final_refinement.h>
 #include <swslam/graph/sliding_window.h>
+#include <swslam/loop/final_refinement.h>
 
 #include <mrpt/system/CTimeLogger.h>
 

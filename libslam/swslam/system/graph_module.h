@@ -10,10 +10,10 @@
 
 #include <swslam/graph/optimizer.h>
 #include <swslam/graph/optimizer_params.h>
-#include <swslam/loop/final_refinement_params.h>
+#include <swslam/graph/pose_graph.h>
 #include <swslam/loop/closer.h>
 #include <swslam/loop/corroboration.h>
-#include <swslam/graph/pose_graph.h>
+#include <swslam/loop/final_refinement_params.h>
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
 

@@ -10,15 +10,15 @@
 // said. A module that fails, in either mode, stops the pipeline; error() says which and
 // why, and results() still holds everything processed until then.
 
+#include <swslam/common/tum_io.h>
 #include <swslam/graph/pose_graph.h>
 #include <swslam/system/backlog.h>
 #include <swslam/system/blocking_queue.h>
+#include <swslam/system/config.h>
 #include <swslam/system/graph_module.h>
 #include <swslam/system/map_module.h>
 #include <swslam/system/messages.h>
 #include <swslam/system/scan_stats.h>
-#include <swslam/system/config.h>
-#include <swslam/common/tum_io.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 

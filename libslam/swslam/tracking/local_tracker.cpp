@@ -1,9 +1,9 @@
 #include <swslam/tracking/local_tracker.h>
 #include <swslam/geometry/information.h>
 
-#include <swslam/tracking/motion_prediction.h>
 #include <swslam/correlative/searched_match.h>
 #include <swslam/geometry/sensor_frame.h>
+#include <swslam/tracking/motion_prediction.h>
 
 #include <mrpt/system/datetime.h>
 

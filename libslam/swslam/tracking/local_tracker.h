@@ -8,8 +8,8 @@
 #include <swslam/correlative/score_grid.h>
 #include <swslam/graph/constraint.h>
 #include <swslam/plicp/plicp.h>
-#include <swslam/tracking/steady_motion.h>
 #include <swslam/tracking/params.h>
+#include <swslam/tracking/steady_motion.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
