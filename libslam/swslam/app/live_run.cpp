@@ -1,6 +1,7 @@
 #include <swslam/app/live_run.h>
 
 #include <swslam/app/exit_codes.h>
+#include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
 #include <swslam/app/skip_reporter.h>
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <ostream>
 
 namespace swslam::app
@@ -56,6 +58,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   system::SystemParams params;
   std::unique_ptr<io::HokuyoLink> link;
   std::unique_ptr<io::RawlogRecorder> recorder;
+  std::optional<OutputFolder> folder;
   try
   {
     // Checked before the stall timeout becomes whole milliseconds (a cast of a huge or NaN value).
@@ -70,11 +73,14 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     // (whose other sections, e.g. [global], are rawlog-grabber's and not read here).
     params = sensor_file ? system::loadSystemParams(*cfg) : system::loadSystemParams(*cfg, {opts.sensor_section});
     const mrpt::config::CConfigFileBase& sensor_cfg = sensor_file ? *sensor_file : *cfg;
+    // The folder before the sensor: a folder that cannot be written fails at once. The
+    // recording replaces a previous one from the start, so do the other outputs.
+    folder.emplace(opts.output);
+    folder->clearPreviousRun(runOutputFiles());
     io::HokuyoLinkOptions lo;
     lo.stall_timeout = milliseconds(static_cast<long>(1000 * opts.stall_timeout));
     link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
                                         [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
-    std::filesystem::create_directories(opts.output);
     recorder = std::make_unique<io::RawlogRecorder>(
         opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
   }

@@ -1,5 +1,6 @@
 #include <swslam/app/offline_run.h>
 
+#include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
 #include <swslam/app/skip_reporter.h>
@@ -14,22 +15,78 @@
 #include <filesystem>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <thread>
 
 namespace swslam::app
 {
+namespace
+{
+/** The input broke off after `read` scans. */
+struct InputStopped : std::runtime_error
+{
+  InputStopped(const std::string& what, size_t read) : std::runtime_error(what), read(read) {}
+  size_t read;
+};
+
+/** Feeds the source's scans to the system until the source ends, a signal arrives, the scan
+ * limit is reached or the system stops; returns the scans read. Paced at
+ * opts.realtime_factor times the log's rate if set. Throws InputStopped if the input breaks
+ * off. */
+size_t feedAll(const OfflineRunOptions& opts, io::ScanSource& source, system::SlamSystem& slam,
+               const StopSignal& stop, ProgressBar& bar, SkipReporter& skips,
+               std::chrono::steady_clock::time_point t0)
+{
+  size_t read = 0;
+  try
+  {
+    sensor::ScanInput in;
+    std::optional<double> first_stamp;
+    while (!stop.requested() && (opts.max_scans == 0 || read < opts.max_scans) && source.next(in))
+    {
+      if (opts.realtime_factor > 0)
+      {
+        // Pacing, as a live sensor would deliver the scans.
+        const double t = mrpt::Clock::toDouble(in.observation->timestamp);
+        if (!first_stamp) first_stamp = t;
+        const double due = std::max(0.0, (t - *first_stamp) / opts.realtime_factor);
+        std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(std::min(due, 3600.0))));
+      }
+      const system::FeedResult r = slam.feed(std::move(in));
+      read++;
+      if (r.status == system::FeedStatus::Stopped) break;
+      if (!r.message.empty()) skips.report(r.status, read - 1, r.message);
+      if (!bar.due()) continue;  // the status is gathered only when the bar redraws
+      const system::SystemStatus st = slam.status();
+      bar.update(source.fractionRead(), st.scans,
+                 std::to_string(st.nodes) + " nodes " + std::to_string(st.loops) + " loops");
+    }
+  }
+  catch (const std::exception& e)
+  {
+    throw InputStopped(e.what(), read);
+  }
+  return read;
+}
+}  // namespace
+
 int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err)
 {
   StopSignal stop;
   system::SystemParams params;
   std::unique_ptr<io::ScanSource> source;
   std::vector<common::StampedPose> truth;
+  std::optional<OutputFolder> folder;
   try
   {
     params = system::loadSystemParams(opts.config);
     if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
     source = io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label}, params.carmen);
-    std::filesystem::create_directories(opts.output);
+    folder.emplace(opts.output);
+    if (folder->staleRemoved() > 0)
+      err << "swslam: removed " << folder->staleRemoved() << " temporary file(s) that a killed run left in "
+          << opts.output << "\n";
   }
   catch (const std::exception& e)
   {
@@ -45,32 +102,12 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   size_t read = 0;
   try
   {
-    sensor::ScanInput in;
-    std::optional<double> first_stamp;
-    while (!stop.requested() && (opts.max_scans == 0 || read < opts.max_scans) && source->next(in))
-    {
-      if (opts.realtime_factor > 0)
-      {
-        // Pacing, as a live sensor would deliver the scans.
-        const double t = mrpt::Clock::toDouble(in.observation->timestamp);
-        if (!first_stamp) first_stamp = t;
-        const double due = std::max(0.0, (t - *first_stamp) / opts.realtime_factor);
-        std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                               std::chrono::duration<double>(std::min(due, 3600.0))));
-      }
-      const system::FeedResult r = slam->feed(std::move(in));
-      read++;
-      if (r.status == system::FeedStatus::Stopped) break;
-      if (!r.message.empty()) skips.report(r.status, read - 1, r.message);
-      if (!bar.due()) continue;  // the status is gathered only when the bar redraws
-      const system::SystemStatus st = slam->status();
-      bar.update(source->fractionRead(), st.scans,
-                 std::to_string(st.nodes) + " nodes " + std::to_string(st.loops) + " loops");
-    }
+    read = feedAll(opts, *source, *slam, stop, bar, skips, t0);
   }
-  catch (const std::exception& e)
+  catch (const InputStopped& e)
   {
     bar.done();
+    read = e.read;
     err << "swslam: input stopped after " << read << " scans: " << e.what()
         << "\nswslam: writing the outputs of what was read\n";
     code = kExitInputError;
@@ -118,6 +155,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   }
   std::string text = "# swslam on " + source->describe() + " (" +
                      (opts.deterministic ? "deterministic" : "threaded") + ")\n" + system::formatRunSummary(summary);
+  folder->clearPreviousRun(runOutputFiles());
   const auto problems = writeRunOutputs(opts.output, results, grid, params.map, text, opts.render);
   for (const map::OutputProblem& p : problems) err << "swslam: could not write " << p.file << ": " << p.message << "\n";
   if (!problems.empty() && code == kExitOk) code = kExitOutputError;

@@ -1,5 +1,7 @@
 // End to end: the `swslam` app's code on the bundled lake-short log; every output loads back.
 #include <swslam/app/offline_run.h>
+#include <swslam/app/output_folder.h>
+#include <swslam/app/run_outputs.h>
 #include <swslam/common/tum_io.h>
 #include <swslam/eval/report.h>
 #include <swslam/graph/io.h>
@@ -15,6 +17,7 @@
 #include <octomap/OcTree.h>
 
 #include <filesystem>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -192,5 +195,36 @@ TEST(OfflineRun, AGroundTruthThatDoesNotOverlapTheRunIsAnErrorAfterTheOutputs)
   EXPECT_EQ(runOffline(o, out, err), kExitInputError);
   EXPECT_NE(err.str().find("ground truth: "), std::string::npos) << err.str();
   EXPECT_EQ(common::readTum(o.output + "/trajectory.tum").size(), 200u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OfflineRun, ARerunReplacesEveryOutputOfThePreviousRunAndTwoRunsDoNotShareAFolder)
+{
+  const std::string src = SWSLAM_SOURCE_DIR, dir = test::tempDir("offline_rerun");
+  OfflineRunOptions o;
+  o.config = src + "/config/default.ini";
+  o.input = src + "/datasets/lake-short/lake-short.rawlog";
+  o.output = dir + "/out";
+  o.deterministic = true;
+  o.render = false;
+  o.max_scans = 300;
+  {
+    OutputFolder other(o.output);  // a second run holding the folder
+    std::ostringstream out, err;
+    EXPECT_EQ(runOffline(o, out, err), kExitUsage);
+    EXPECT_NE(err.str().find("another run is writing into it"), std::string::npos) << err.str();
+  }
+  // A previous run's output, and a temporary file of a run killed while writing.
+  for (const char* old : {"render.png", ".graph.tmp99.graph"}) std::ofstream(o.output + "/" + old) << "old";
+  std::ostringstream out, err;
+  ASSERT_EQ(runOffline(o, out, err), kExitOk) << err.str();
+  EXPECT_NE(err.str().find("removed 1 temporary file(s)"), std::string::npos) << err.str();
+  // Exactly this run's outputs: the old render (not written without --render) is gone.
+  std::set<std::string> files, expected;
+  for (const auto& e : std::filesystem::directory_iterator(o.output))
+    if (e.path().filename() != ".swslam.lock") files.insert(e.path().filename().string());
+  for (const auto& f : runOutputFiles())
+    if (f != "render.png") expected.insert(f);
+  EXPECT_EQ(files, expected);
   std::filesystem::remove_all(dir);
 }

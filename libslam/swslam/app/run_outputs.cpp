@@ -63,6 +63,12 @@ map::RenderInput renderInputOf(const system::RunResults& results)
   return in;
 }
 
+std::vector<std::string> runOutputFiles()
+{
+  return {"map.gridmap.gz", "map.png", "map.yaml", "map.pgm", "map.bt", "render.png",
+          "trajectory.tum", "keyframes.tum", "graph.graph", "stats.csv", "summary.md"};
+}
+
 std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const system::RunResults& results,
                                            const mrpt::maps::COccupancyGridMap2D& grid,
                                            const map::MapParams& map_params, const std::string& summary,

@@ -19,6 +19,9 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
                                            const map::MapParams& map_params, const std::string& summary,
                                            bool render = true);
 
+/** The files writeRunOutputs writes (render.png included), by name. */
+std::vector<std::string> runOutputFiles();
+
 /** Table I figures of a run; with a ground truth, also ATE and RPE (poses associated within
  * `max_dt` seconds). Throws std::runtime_error if the ground truth does not overlap. */
 system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,

@@ -1,0 +1,67 @@
+#include <swslam/app/output_folder.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <stdexcept>
+#include <system_error>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace swslam::app
+{
+namespace fs = std::filesystem;
+
+bool isAtomicTemporary(const std::string& file_name)
+{
+  static const std::regex pattern(R"(^\..+\.tmp[0-9]+(\.[^.]+)*$)");
+  return std::regex_match(file_name, pattern);
+}
+
+OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
+{
+  const auto fail = [&](const std::string& why) {
+    throw std::invalid_argument("output folder '" + dir + "': " + why);
+  };
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) fail("cannot be created" + (ec ? ": " + ec.message() : std::string()));
+  const std::string lock_path = (fs::path(dir) / ".swslam.lock").string();
+  lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) fail(std::string("cannot be written: ") + std::strerror(errno));
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0)
+  {
+    std::ifstream in(lock_path);
+    std::string pid;
+    std::getline(in, pid);
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    fail("another run is writing into it" + (pid.empty() ? std::string() : " (process " + pid + ")"));
+  }
+  // The holder's process id, for the message above (the lock itself is the flock).
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size()))
+    fail(std::string("cannot be written: ") + std::strerror(errno));
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.is_regular_file() && isAtomicTemporary(entry.path().filename().string()) && fs::remove(entry.path(), ec))
+      stale_removed_++;
+}
+
+OutputFolder::~OutputFolder()
+{
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
+}
+
+void OutputFolder::clearPreviousRun(const std::vector<std::string>& names)
+{
+  if (cleared_) return;
+  cleared_ = true;
+  std::error_code ec;
+  for (const auto& name : names) fs::remove(fs::path(dir_) / name, ec);
+}
+
+}  // namespace swslam::app
