@@ -14,6 +14,9 @@ struct SystemOptions : public mrpt::config::CLoadableOptions
   /// threaded mode: keyframes the graph thread has not finished at most when tracking takes a
   /// scan (it waits until then); 0: tracking goes on from optimized keyframes; -1: no bound
   int max_graph_lag = 0;
+  /// [m/s] an odometry increment longer than this speed times the time since the previous
+  /// scan (at least one second's worth) is dropped and said, not fed to tracking (0: no check)
+  double max_odometry_speed = 50;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

@@ -83,11 +83,24 @@ FeedResult SlamSystem::feed(sensor::ScanInput input)
   {
     return skip(FeedStatus::BadGeometry, e.what());
   }
+  // An odometry increment is checked where it enters: a value no vehicle reaches would become
+  // the tracker's guess, the search's window and a map pose.
+  const double since_last = t - last_timestamp_;
   last_timestamp_ = t;
   if (input.odometry_increment && !isFinite(*input.odometry_increment))
   {
     result = {FeedStatus::OdometryDropped,
               "odometry increment " + input.odometry_increment->asString() + " is not finite: ignored"};
+    input.odometry_increment.reset();
+  }
+  else if (input.odometry_increment && params_.system.max_odometry_speed > 0 &&
+           input.odometry_increment->norm() > params_.system.max_odometry_speed * std::max(since_last, 1.0))
+  {
+    char buf[240];
+    std::snprintf(buf, sizeof(buf),
+                  "odometry increment of %.6g m in %.3g s is beyond [system] max_odometry_speed (%g m/s): ignored",
+                  input.odometry_increment->norm(), since_last, params_.system.max_odometry_speed);
+    result = {FeedStatus::OdometryDropped, buf};
     input.odometry_increment.reset();
   }
   const size_t index = fed_++;

@@ -44,7 +44,7 @@ enum class FeedStatus
   Accepted,
   TimestampNotIncreasing,  ///< backwards or duplicated: skipped
   BadGeometry,             ///< too few beams, aperture, max range or sensor pose unusable: skipped
-  OdometryDropped,         ///< taken, without its odometry increment (not finite)
+  OdometryDropped,         ///< taken, without its odometry increment (not finite, or too long)
   TimestampsResumed,       ///< taken: the scans behind a stamp that jumped forward resume the log
   Stopped,                 ///< the pipeline stopped (finish() was called or a module failed)
 };

@@ -401,7 +401,9 @@ TEST(SlamSystem, AModuleThatFailsInDeterministicModeStopsThePipelineAsInThreaded
 {
   // An odometry jump of 1000 km: tracking falls back to it, the map refuses the node. The
   // failure is the map's (not an exception out of feed()), and what came before is kept.
-  SlamSystem slam(defaultParams(), RunMode::Deterministic);
+  auto params = defaultParams();
+  params.system.max_odometry_speed = 0;  // no check: let the jump reach the modules
+  SlamSystem slam(params, RunMode::Deterministic);
   test::World world = test::roomWorld();
   std::mt19937 rng(5);
   for (int k = 0; k < 4; k++)
@@ -415,4 +417,33 @@ TEST(SlamSystem, AModuleThatFailsInDeterministicModeStopsThePipelineAsInThreaded
   const RunResults res = slam.results();
   EXPECT_EQ(res.trajectory.size(), 5u);
   EXPECT_GE(res.graph.nodeCount(), 1u);
+}
+
+TEST(SlamSystem, AnOdometryIncrementNoVehicleReachesIsDroppedWhereItEnters)
+{
+  // One odometry value of -5.3e25 in a good rawlog grew the search past 12 GB.
+  SlamSystem slam(defaultParams(), RunMode::Deterministic);
+  test::World world = test::roomWorld();
+  std::mt19937 rng(6);
+  for (int k = 0; k < 12; k++)
+  {
+    const CPose2D pose(0.05 * k, 0, 0);
+    std::optional<CPose2D> odometry = CPose2D(0.05, 0, 0);
+    if (k == 5) odometry = CPose2D(-5.3e25, 0, 0);
+    if (k == 7) odometry = CPose2D(0, 60, 0);  // 60 m in 0.1 s
+    const FeedResult r = slam.feed({scanAt(world, pose, 10.0 + 0.1 * k, rng), odometry});
+    if (k == 5 || k == 7)
+    {
+      EXPECT_EQ(r.status, FeedStatus::OdometryDropped);
+      EXPECT_NE(r.message.find("beyond [system] max_odometry_speed (50 m/s)"), std::string::npos) << r.message;
+    }
+    else
+      EXPECT_EQ(r.status, FeedStatus::Accepted) << r.message;
+  }
+  slam.finish();
+  EXPECT_EQ(slam.error(), "");
+  const RunResults res = slam.results();
+  ASSERT_EQ(res.trajectory.size(), 12u);
+  EXPECT_NEAR(res.trajectory.back().pose.x(), 0.55, 0.05);
+  EXPECT_NEAR(res.trajectory.back().pose.y(), 0, 0.05);
 }
