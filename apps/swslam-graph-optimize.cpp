@@ -24,6 +24,11 @@ int main(int argc, char** argv)
                                        false, "", "A", cmd);
     TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
     TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
+    std::vector<std::string> schedules{"fixed", "gnc"};
+    TCLAP::ValuesConstraint<std::string> schedule_names(schedules);
+    TCLAP::ValueArg<std::string> kernel("", "kernel", "fixed: the kernel from the start; gnc: graduated "
+                                        "non-convexity down to it ([graph_optimizer] kernel_schedule)",
+                                        false, "", &schedule_names, cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
     swslam::graph::GraphOptimizerParams params;
@@ -40,6 +45,9 @@ int main(int argc, char** argv)
     }
     if (c.isSet()) params.kernel_c = c.getValue();
     if (iters.isSet()) params.max_iterations = iters.getValue();
+    if (kernel.isSet())
+      params.kernel_schedule = kernel.getValue() == "gnc" ? swslam::graph::KernelSchedule::Gnc
+                                                         : swslam::graph::KernelSchedule::Fixed;
     params.check();
 
     swslam::graph::GraphLoadReport load;
@@ -54,6 +62,14 @@ int main(int argc, char** argv)
                 "active squared residuals: %.9g\ntime: %.3f ms\n",
                 swslam::graph::statusName(r.status), r.message.c_str(), r.iterations, r.initial_chi2,
                 r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
+    // The edges the kernel distrusts.
+    std::printf("switched off: %zu edges (weight below %g)\n", r.switched_off.size(), params.switched_off_weight);
+    for (const size_t k : r.switched_off)
+    {
+      const auto& e = graph.edge(k);
+      std::printf("  edge %zu: %lu -> %lu (%s)\n", k, static_cast<unsigned long>(e.from),
+                  static_cast<unsigned long>(e.to), swslam::graph::edgeKindName(e.kind));
+    }
     if (r.status == swslam::graph::OptimizationStatus::Diverged) return 2;
     swslam::graph::saveGraph(graph, out.getValue());
     return 0;

@@ -43,3 +43,21 @@ if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha=2 2> "$DIR/err.txt" > /dev/null; th
 if "$BIN" -i "$DIR/nope.graph" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "missing file accepted"; fi
 grep -q "cannot open" "$DIR/err.txt" || fail "missing file message"
 echo "graph_optimize_app_test: OK"
+
+# Three false loops added to the circle: graduated non-convexity to Geman-McClure switches off
+# exactly those three and lists them; the result is the circle's optimum without them.
+{ cat "$IN"; echo "EDGE2 5 30 80 60 1.0 1 0 1 1 0 0"; echo "EDGE2 12 40 -90 30 -2 1 0 1 1 0 0";
+  echo "EDGE2 20 45 0 100 0.5 1 0 1 1 0 0"; } > "$DIR/false.graph"
+"$BIN" -i "$DIR/false.graph" -o "$DIR/false.g2o" --kernel gnc --alpha -2 > "$DIR/gnc.txt" || fail "gnc failed"
+cat "$DIR/gnc.txt"
+grep -q "graduated non-convexity" "$DIR/gnc.txt" || fail "gnc not said"
+grep -q "switched off: 3 edges" "$DIR/gnc.txt" || fail "switched-off count"
+for pair in "5 -> 30" "12 -> 40" "20 -> 45"; do
+  grep -q ": $pair (loop)" "$DIR/gnc.txt" || fail "false loop $pair not listed"
+done
+"$BIN" -i "$IN" -o "$DIR/clean.g2o" --alpha 2 > /dev/null || fail "clean optimum"
+paste <(grep '^VERTEX_SE2' "$DIR/clean.g2o") <(grep '^VERTEX_SE2' "$DIR/false.g2o") |
+  awk '{ d = sqrt(($3 - $8)^2 + ($4 - $9)^2); if (d > m) m = d } END { print "largest distance to the clean optimum:", m; exit !(m < 0.01) }' ||
+  fail "gnc result is not the clean optimum"
+"$BIN" -i "$IN" -o "$DIR/x.g2o" --kernel nonsense > /dev/null 2>&1 && fail "unknown --kernel accepted"
+echo "graph_optimize_app_test: OK"

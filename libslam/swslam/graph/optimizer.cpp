@@ -219,7 +219,25 @@ void checkProblem(const GraphProblem& p)
   }
 }
 
-OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params)
+std::vector<double> robustResiduals(const GraphProblem& problem)
+{
+  const std::vector<geometry::SinCos> rz = measurementRotations(problem);
+  const std::vector<geometry::SinCos> rx = poseRotations(problem.poses);
+  std::vector<double> r(problem.edges.size(), 0.0);
+  for (size_t n = 0; n < problem.edges.size(); ++n)
+  {
+    const auto& e = problem.edges[n];
+    if (!e.robust) continue;
+    const Eigen::Vector3d err = geometry::se2Error(problem.poses[e.i], problem.poses[e.j], e.z, rx[e.i], rz[n]);
+    r[n] = std::sqrt(err.dot(e.information * err));
+  }
+  return r;
+}
+
+namespace
+{
+/** The optimization with the kernel as params give it (KernelSchedule::Fixed). */
+OptimizationReport optimizeWithKernel(GraphProblem& problem, const GraphOptimizerParams& params)
 {
   mrpt::system::CTicTac timer;
   params.check();
@@ -254,6 +272,98 @@ OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimi
   rep.status = out.status;
   rep.message = out.why;
   rep.time_s = timer.Tac();
+  return rep;
+}
+
+/** Graduated non-convexity over the kernel's scale (KernelSchedule::Gnc): stages of
+ * optimizeWithKernel with c = kernel_c sqrt(mu), mu from max(1, 2 r_max^2 / kernel_c^2) down
+ * to 1 by gnc_factor, each from the last one's poses. */
+OptimizationReport optimizeGnc(GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  mrpt::system::CTicTac timer;
+  params.check();
+  checkProblem(problem);
+  const std::vector<geometry::Pose2> given = problem.poses;
+  const std::vector<double> r = robustResiduals(problem);
+  const double r_max = r.empty() ? 0.0 : *std::max_element(r.begin(), r.end());
+  // Not finite: the first stage reports the divergence.
+  double mu = std::isfinite(r_max) ? std::max(1.0, 2 * r_max * r_max / (params.kernel_c * params.kernel_c)) : 1.0;
+  GraphOptimizerParams stage = params;
+  stage.kernel_schedule = KernelSchedule::Fixed;
+  OptimizationReport total;
+  for (size_t k = 0;; ++k)
+  {
+    stage.kernel_c = params.kernel_c * std::sqrt(mu);
+    const OptimizationReport s = optimizeWithKernel(problem, stage);
+    if (k == 0)
+    {
+      total = s;
+      // The first stage starts under its own, wider kernel: the initial cost is the target's.
+      total.initial_cost = evaluate(problem, given, params.kernel(), measurementRotations(problem)).cost;
+    }
+    else
+    {
+      total.iterations += s.iterations;
+      total.accepted_steps += s.accepted_steps;
+      total.final_chi2 = s.final_chi2;
+      total.final_cost = s.final_cost;
+      total.active_sq_residuals = s.active_sq_residuals;
+      total.status = s.status;
+      total.message = s.message;
+    }
+    if (s.status == OptimizationStatus::Diverged)
+    {
+      problem.poses = given;
+      total.status = s.status;
+      total.message = "stage " + std::to_string(k + 1) + " (c = " + std::to_string(stage.kernel_c) + "): " + s.message;
+      break;
+    }
+    total.stages = k + 1;
+    if (s.status == OptimizationStatus::NothingToOptimize || mu <= 1) break;
+    mu = std::max(1.0, mu / params.gnc_factor);
+  }
+  if (total.status == OptimizationStatus::Diverged || total.status == OptimizationStatus::NothingToOptimize)
+  {
+    total.time_s = timer.Tac();
+    return total;
+  }
+  // The edges the kernel kept are inliers: a last least-squares solve on them alone, so that
+  // their noise is not down-weighted (with no outlier this is the least-squares optimum).
+  GraphProblem inliers = problem;
+  inliers.edges.clear();
+  const std::vector<double> r_end = robustResiduals(problem);
+  for (size_t n = 0; n < problem.edges.size(); ++n)
+    if (!problem.edges[n].robust || normalizedBarronWeight(r_end[n], params.kernel()) >= params.switched_off_weight)
+      inliers.edges.push_back(problem.edges[n]);
+  GraphOptimizerParams l2 = stage;
+  l2.kernel_alpha = 2;
+  const OptimizationReport refit = optimizeWithKernel(inliers, l2);
+  total.iterations += refit.iterations;
+  total.accepted_steps += refit.accepted_steps;
+  if (refit.status != OptimizationStatus::Diverged) problem.poses = inliers.poses;
+  const Evaluation end = evaluate(problem, problem.poses, params.kernel(), measurementRotations(problem));
+  total.final_chi2 = end.chi2;
+  total.final_cost = end.cost;
+  total.active_sq_residuals = end.active;
+  total.message = "graduated non-convexity, " + std::to_string(total.stages) + " stages, then least squares on the " +
+                  std::to_string(inliers.edges.size()) + " edges kept: " + total.message;
+  total.time_s = timer.Tac();
+  return total;
+}
+}  // namespace
+
+OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  OptimizationReport rep = params.kernel_schedule == KernelSchedule::Gnc ? optimizeGnc(problem, params)
+                                                                          : optimizeWithKernel(problem, params);
+  // Which robustified edges the kernel has switched off at the result.
+  if (rep.status != OptimizationStatus::NothingToOptimize)
+  {
+    const std::vector<double> r = robustResiduals(problem);
+    for (size_t n = 0; n < problem.edges.size(); ++n)
+      if (problem.edges[n].robust && normalizedBarronWeight(r[n], params.kernel()) < params.switched_off_weight)
+        rep.switched_off.push_back(n);
+  }
   return rep;
 }
 

@@ -47,6 +47,8 @@ struct OptimizationReport
   double active_sq_residuals = 0;  ///< sum of w r^2 at the result (eq. 11; paper Fig. 7)
   double time_s = 0;
   size_t free_nodes = 0, fixed_nodes = 0, edges = 0;
+  size_t stages = 1;            ///< graduated non-convexity: kernel scales optimized in turn
+  std::vector<size_t> switched_off;  ///< robustified edges whose final weight is below switched_off_weight
   std::string message;          ///< why it stopped, in words
 };
 
@@ -57,7 +59,12 @@ double graphChi2(const GraphProblem& problem);
  * itself, or the per-pose vectors differ in size. */
 void checkProblem(const GraphProblem& problem);
 
-/** Optimizes problem.poses in place. On Diverged the poses are left exactly as given. */
+/** sqrt(e^T Omega e) of each robustified edge at the problem's poses (0 for the others). */
+std::vector<double> robustResiduals(const GraphProblem& problem);
+
+/** Optimizes problem.poses in place, with the kernel schedule of params (fixed, or graduated
+ * non-convexity), and reports the robustified edges the kernel switched off. On Diverged the
+ * poses are left exactly as given. */
 OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params);
 
 }  // namespace swslam::graph

@@ -44,13 +44,28 @@ void GraphOptimizerParams::check() const
         "graph_optimizer: full_optimization_loop_theta_DEG must be in [0, 180]");
   if (max_iterations < 1)
     throw std::invalid_argument("graph_optimizer: max_iterations must be >= 1");
+  if (!(gnc_factor > 1 && gnc_factor <= 100))
+    throw std::invalid_argument("graph_optimizer: gnc_factor must be in (1, 100]");
+  if (!(switched_off_weight >= 0 && switched_off_weight < 1))
+    throw std::invalid_argument("graph_optimizer: switched_off_weight must be in [0, 1)");
 }
+
+const char* kernelScheduleName(KernelSchedule s) { return s == KernelSchedule::Gnc ? "gnc" : "fixed"; }
 
 void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                               const std::string& s)
 {
   MRPT_LOAD_CONFIG_VAR(kernel_alpha, double, c, s);
   MRPT_LOAD_CONFIG_VAR(kernel_c, double, c, s);
+  const std::string schedule = c.read_string(s, "kernel_schedule", kernelScheduleName(kernel_schedule));
+  if (schedule == "fixed")
+    kernel_schedule = KernelSchedule::Fixed;
+  else if (schedule == "gnc")
+    kernel_schedule = KernelSchedule::Gnc;
+  else
+    throw std::invalid_argument("graph_optimizer: kernel_schedule '" + schedule + "' is not fixed or gnc");
+  MRPT_LOAD_CONFIG_VAR(gnc_factor, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(switched_off_weight, double, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_consecutive, bool, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_dense_neighbour, bool, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_loop, bool, c, s);
@@ -76,6 +91,11 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   c.write(s, "kernel_alpha", kernel_alpha, -1, -1,
           "Barron kernel shape in [-inf, 2]: 2 L2, 1 L1-like, 0 Cauchy, -2 Geman-McClure, -inf Welsch");
   c.write(s, "kernel_c", kernel_c, -1, -1, "kernel scale, in standard deviations of the residual");
+  c.write(s, "kernel_schedule", std::string(kernelScheduleName(kernel_schedule)), -1, -1,
+          "fixed: the kernel from the start; gnc: graduated non-convexity, from a scale where every residual is an inlier down to kernel_c");
+  c.write(s, "gnc_factor", gnc_factor, -1, -1, "gnc: the scale's squared multiple is divided by this each stage");
+  c.write(s, "switched_off_weight", switched_off_weight, -1, -1,
+          "a robustified edge whose final weight is below this is reported as switched off");
   c.write(s, "robust_consecutive", robust_consecutive, -1, -1, "robustify consecutive edges");
   c.write(s, "robust_dense_neighbour", robust_dense_neighbour, -1, -1,
           "robustify dense-neighbour edges");

@@ -11,11 +11,30 @@
 
 namespace swslam::graph
 {
+/** How the kernel is applied: as it is from the start (the paper), or by graduated
+ * non-convexity (Yang et al., RA-L 2020): the scale starts where every residual of the
+ * initial guess is an inlier (a convex, least-squares-like problem) and shrinks stage by
+ * stage to kernel_c, each stage started from the last one's result. */
+enum class KernelSchedule
+{
+  Fixed,
+  Gnc
+};
+const char* kernelScheduleName(KernelSchedule s);
+
 struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
 {
   // Barron kernel (paper eq. 14) on r = sqrt(e^T Omega e), so c is in standard deviations.
   double kernel_alpha = 0.0;  ///< [-inf, 2]: 2 L2, 0 Cauchy, -2 Geman-McClure, -inf Welsch
   double kernel_c = 3.0;      ///< residual (Mahalanobis) where down-weighting begins
+  KernelSchedule kernel_schedule = KernelSchedule::Fixed;  ///< ini: kernel_schedule = fixed | gnc
+  /** GNC: mu, the square of the scale's multiple of kernel_c, starts at
+   * max(1, 2 r_max^2 / kernel_c^2) (r_max: the largest robustified residual of the initial
+   * guess) and is divided by this each stage down to 1. */
+  double gnc_factor = 1.4;
+  /** A robustified edge whose final weight (1 for an inlier) is below this is reported as
+   * switched off (OptimizationReport::switched_off). */
+  double switched_off_weight = 0.1;
 
   // Which edge kinds are robustified (paper: consecutive constraints; loops too, see issue 5).
   bool robust_consecutive = true;

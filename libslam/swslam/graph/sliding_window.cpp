@@ -130,6 +130,7 @@ OptimizationReport optimizeSubproblem(GraphSubproblem sub, PoseGraph& graph,
 {
   OptimizationReport rep = optimizeGraphProblem(sub.problem, params);
   if (rep.status != OptimizationStatus::Diverged) writeBack(sub, graph);
+  for (size_t& k : rep.switched_off) k = sub.edge_indices[k];  // the graph's edge indices
   return rep;
 }
 }  // namespace

@@ -36,7 +36,8 @@ GraphSubproblem fullSubproblem(const PoseGraph& graph, const GraphOptimizerParam
 void writeBack(const GraphSubproblem& sub, PoseGraph& graph);
 
 /** Optimizes the sliding window of params.window_size newest nodes; the graph is updated
- * unless the report says Diverged. */
+ * unless the report says Diverged. The report's switched_off are the graph's edge indices
+ * (also for optimizeFull). */
 OptimizationReport optimizeWindow(PoseGraph& graph, const GraphOptimizerParams& params);
 
 /** Optimizes the whole graph with the root fixed; updated unless Diverged. */

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 namespace swslam::graph
 {
@@ -90,6 +91,40 @@ SyntheticGraph makeGridWalkGraph(const SyntheticGraphOptions& o)
     ++out.wrong_loops;
   }
   return out;
+}
+
+std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& o)
+{
+  const std::vector<PoseGraph::TNodeID> ids = graph.nodeIds();
+  const size_t run = o.grouped ? std::max<size_t>(o.group_size, 1) : 1;
+  if (ids.size() < run + 1)
+    throw std::invalid_argument("false loops: the graph has " + std::to_string(ids.size()) + " nodes, fewer than " +
+                                std::to_string(run + 1));
+  mrpt::math::CMatrixDouble33 info;
+  info.setZero();
+  info(0, 0) = info(1, 1) = 1 / (0.05 * 0.05);
+  info(2, 2) = 1 / (0.01 * 0.01);
+  for (size_t k = 0; k < graph.edgeCount(); ++k)
+    if (graph.edge(k).kind == EdgeKind::Loop)
+    {
+      info = graph.edge(k).measurement->cov_inv;
+      break;
+    }
+  std::mt19937 rng(o.seed);
+  std::uniform_int_distribution<size_t> start(0, ids.size() - run);
+  std::uniform_real_distribution<double> offset(-o.max_offset, o.max_offset), angle(-M_PI, M_PI);
+  std::vector<size_t> added;
+  while (added.size() < o.count)
+  {
+    const size_t a = start(rng), b = start(rng);
+    if (a == b) continue;
+    mrpt::poses::CPosePDFGaussianInf z;
+    z.mean = mrpt::poses::CPose2D(offset(rng), offset(rng), angle(rng));
+    z.cov_inv = info;
+    for (size_t t = 0; t < run && added.size() < o.count; ++t)
+      added.push_back(graph.addEdge(ids[a + t], ids[b + t], z, EdgeKind::Loop));
+  }
+  return added;
 }
 
 std::vector<geometry::Pose2> truthFromGraph(const PoseGraph& graph)

@@ -37,6 +37,24 @@ struct SyntheticGraph
  * dense-neighbour; then loops up to total_edges. */
 SyntheticGraph makeGridWalkGraph(const SyntheticGraphOptions& options);
 
+/** False loop closures added to a graph, as benchmarks of robust back ends do (Suenderhauf
+ * and Protzel's Vertigo): random node pairs with a random measurement, or (grouped) runs of
+ * `group_size` consecutive pairs (i + t, j + t) sharing one measurement, which agree with each
+ * other and so reinforce one another. */
+struct FalseLoopOptions
+{
+  size_t count = 0;
+  bool grouped = false;
+  size_t group_size = 10;
+  double max_offset = 5.0;  ///< [m] measured translation uniform in [-max_offset, max_offset]^2
+  unsigned seed = 1;
+};
+
+/** Adds the false loops (kind Loop, the information of the graph's first loop edge, else of
+ * 5 cm and 0.6 degrees) and returns their edge indices. Throws std::invalid_argument for a
+ * graph of fewer than two nodes (or fewer than group_size + 1 when grouped). */
+std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& options);
+
 struct TruthError
 {
   double rmse_xy = 0, max_xy = 0;  ///< [m]

@@ -1,0 +1,92 @@
+// Graduated non-convexity against false loop closures, from the odometry guess: the kernel
+// switches the false loops off and keeps every true edge, and the result is the optimum of
+// the graph without them (with no false loop, the least-squares optimum).
+#include <swslam/graph/optimizer.h>
+#include <swslam/graph/sliding_window.h>
+#include <swslam/graph/synthetic.h>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace swslam::graph;
+
+namespace
+{
+SyntheticGraph cleanGraph()
+{
+  SyntheticGraphOptions o;
+  o.nodes = 400;
+  o.total_edges = 1200;
+  o.seed = 21;
+  return makeGridWalkGraph(o);
+}
+
+/** The optimum of the graph without false loops (least squares, from the odometry guess). */
+PoseGraph cleanOptimum(const SyntheticGraph& s)
+{
+  PoseGraph g = s.graph;
+  GraphOptimizerParams l2;
+  l2.kernel_alpha = 2;
+  optimizeFull(g, l2);
+  return g;
+}
+
+double distance(const PoseGraph& a, const PoseGraph& b)
+{
+  double sum = 0;
+  for (const auto id : a.nodeIds())
+  {
+    const auto d = a.pose(id) - b.pose(id);
+    sum += d.x() * d.x() + d.y() * d.y();
+  }
+  return std::sqrt(sum / a.nodeCount());
+}
+
+GraphOptimizerParams gnc()
+{
+  GraphOptimizerParams p;
+  p.kernel_alpha = -2;  // Geman-McClure: a false loop's influence goes to zero
+  p.kernel_schedule = KernelSchedule::Gnc;
+  return p;
+}
+}  // namespace
+
+TEST(Gnc, WithoutOutliersItReachesLeastSquares)
+{
+  const SyntheticGraph s = cleanGraph();
+  PoseGraph g = s.graph;
+  const OptimizationReport r = optimizeFull(g, gnc());
+  ASSERT_NE(r.status, OptimizationStatus::Diverged) << r.message;
+  EXPECT_GT(r.stages, 1u);
+  const PoseGraph l2 = cleanOptimum(s);
+  const double chi2_l2 = graphChi2(fullSubproblem(l2, {}).problem);
+  EXPECT_NEAR(r.final_chi2, chi2_l2, 1e-3 * chi2_l2);
+  EXPECT_TRUE(r.switched_off.empty()) << r.switched_off.size() << " true edges switched off";
+}
+
+TEST(Gnc, FalseLoopsAreSwitchedOffRandomOrGrouped)
+{
+  const SyntheticGraph s = cleanGraph();
+  const PoseGraph clean = cleanOptimum(s);
+  for (const bool grouped : {false, true})
+  {
+    PoseGraph g = s.graph;
+    FalseLoopOptions fo;
+    fo.count = 100;
+    fo.grouped = grouped;
+    fo.seed = 3;
+    const std::vector<size_t> added = addFalseLoops(g, fo);
+    ASSERT_EQ(added.size(), fo.count);
+
+    PoseGraph fixed = g;  // the paper's fixed Cauchy kernel from the odometry guess
+    optimizeFull(fixed, GraphOptimizerParams());
+    const OptimizationReport r = optimizeFull(g, gnc());
+    ASSERT_NE(r.status, OptimizationStatus::Diverged) << r.message;
+    EXPECT_LT(distance(g, clean), 0.05) << "grouped " << grouped;
+    EXPECT_LE(distance(g, clean), distance(fixed, clean)) << "grouped " << grouped;
+    // The switched-off edges (graph edge indices) are exactly the false loops.
+    const std::set<size_t> off(r.switched_off.begin(), r.switched_off.end()), truth(added.begin(), added.end());
+    EXPECT_EQ(off, truth) << "grouped " << grouped;
+  }
+}
