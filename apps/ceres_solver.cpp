@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
 #include <functional>
 #include <unordered_map>
 #include <vector>
@@ -37,11 +38,18 @@ struct RelativePoseCost
   swslam::geometry::Pose2 z_;
   Eigen::Matrix3d sqrt_info_;
 };
+
 }  // namespace
 
 swslam::bench::SolverRun runCeres(const swslam::graph::PoseGraph& graph, int repeats)
 {
-  swslam::bench::SolverRun run{"ceres", 0, 0, 0, graph};
+  return runCeresWithLoss(graph, repeats, {});
+}
+
+swslam::bench::SolverRun runCeresWithLoss(const swslam::graph::PoseGraph& graph, int repeats,
+                                          const std::optional<CeresCauchy>& cauchy)
+{
+  swslam::bench::SolverRun run{cauchy ? "ceres-cauchy" : "ceres", 0, 0, 0, graph};
   const std::vector<swslam::graph::PoseGraph::TNodeID> ids = graph.nodeIds();
   std::vector<double> x;
   swslam::bench::timeSolver(repeats, [&] {
@@ -62,7 +70,12 @@ swslam::bench::SolverRun runCeres(const swslam::graph::PoseGraph& graph, int rep
       auto* cost = new ceres::AutoDiffCostFunction<RelativePoseCost, 3, 3, 3>(
           new RelativePoseCost(swslam::geometry::Pose2(m.x(), m.y(), m.phi()),
                                e.measurement->cov_inv.asEigen()));
-      problem.AddResidualBlock(cost, nullptr, &x[i], &x[j]);
+      // Ceres' Cauchy loss a^2 log(1 + s / a^2) on s = r^2 is our normalized Cauchy kernel
+      // (alpha 0) of scale c when a = c sqrt(2).
+      ceres::LossFunction* loss = cauchy && cauchy->robust.isRobust(e.kind)
+                                      ? new ceres::CauchyLoss(std::sqrt(2.0) * cauchy->robust.kernel_c)
+                                      : nullptr;
+      problem.AddResidualBlock(cost, loss, &x[i], &x[j]);
     }
     double* root = &x[index[graph.root()]];
     if (problem.HasParameterBlock(root)) problem.SetParameterBlockConstant(root);

@@ -1,11 +1,17 @@
 // Benchmark of the pose-graph optimizer: ours vs MRPT's optimize_graph_spa_levmarq vs Ceres
 // on the same graphs (time, final chi2 with the original information, error vs truth),
 // the sliding-window update cost against graph size, and robust vs L2 under wrong loops.
-#include "ceres_solver.h"
 #include "cli.h"
+#ifdef SWSLAM_WITH_CERES
+#include "ceres_solver.h"
+#endif
 
+#include <swslam/bench/false_loops.h>
 #include <swslam/bench/graph.h>
+#include <swslam/graph/synthetic.h>
+#include <swslam/system/config.h>
 
+#include <cmath>
 #include <cstdio>
 
 int main(int argc, char** argv)
@@ -14,11 +20,45 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> datasets("", "mrpt-datasets", "MRPT datasets directory", false,
                                         "/usr/share/mrpt/datasets", "DIR", cmd);
   TCLAP::ValueArg<int> repeats("", "repeats", "timed runs per solver (median)", false, 5, "N", cmd);
+  TCLAP::MultiArg<size_t> false_loops("", "false-loops", "instead: robust back ends against this many false "
+                                      "loops (repeatable)", false, "N", cmd);
+  TCLAP::ValueArg<size_t> nodes("", "nodes", "with --false-loops: nodes of the Manhattan-like grid walk",
+                                false, 3500, "N", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "with --false-loops: the [graph_optimizer] section of the "
+                                      "methods (default: the built-in defaults, as config/default.ini)",
+                                      false, "", "INI", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
     if (repeats.getValue() < 1) throw std::invalid_argument("--repeats must be >= 1");
+    if (false_loops.isSet())
+    {
+      swslam::graph::SyntheticGraphOptions o;
+      o.nodes = nodes.getValue();
+      o.total_edges = o.nodes * 1558 / 1000;  // the edges per node of the Manhattan M3500 graph
+      o.dense_neighbours = 0;
+      o.grid_half_extent = std::max(5, static_cast<int>(std::sqrt(o.nodes) / 4));
+      const auto s = swslam::graph::makeGridWalkGraph(o);
+      const swslam::graph::GraphOptimizerParams params =
+          config.isSet() ? swslam::system::loadSystemParams(config.getValue()).graph_optimizer
+                         : swslam::graph::GraphOptimizerParams();
+      auto methods = swslam::bench::ourRobustMethods(params);
+#ifdef SWSLAM_WITH_CERES
+      methods.push_back({"ceres-cauchy", [params](const swslam::graph::PoseGraph& g, std::vector<size_t>& off) {
+                           auto run = runCeresWithLoss(g, 1, CeresCauchy{params});
+                           off = swslam::bench::switchedOffEdges(run.result, params);
+                           return run;
+                         }});
+#endif
+      swslam::bench::falseLoopCases("grid-" + std::to_string(o.nodes), s.graph, false_loops.getValue(), methods,
+                                    stdout);
+      return 0;
+    }
+#ifdef SWSLAM_WITH_CERES
     swslam::bench::runGraphBenchmark(datasets.getValue(), repeats.getValue(), runCeres);
+#else
+    swslam::bench::runGraphBenchmark(datasets.getValue(), repeats.getValue(), {});
+#endif
   }
   catch (const std::exception& e)
   {

@@ -24,7 +24,8 @@ struct BenchGraph
  * node besides its predecessor, loops up to `edges` in total, `wrong` share of wrong loops. */
 BenchGraph gridGraph(size_t nodes, size_t edges, size_t dense, int extent, double wrong, unsigned seed);
 
-/** Runs every section: `run_ceres` runs Ceres (which the library does not link). Throws
+/** Runs every section: `run_ceres` runs Ceres (which the library does not link; empty: the
+ * first table compares with MRPT only). Throws
  * std::runtime_error if MRPT's circle graph is not in `mrpt_datasets`. */
 void runGraphBenchmark(const std::string& mrpt_datasets, int repeats, const GraphSolver& run_ceres);
 

@@ -294,6 +294,7 @@ OptimizationReport optimizeGnc(GraphProblem& problem, const GraphOptimizerParams
   for (size_t k = 0;; ++k)
   {
     stage.kernel_c = params.kernel_c * std::sqrt(mu);
+    stage.max_iterations = mu > 1 ? std::min(params.max_iterations, params.gnc_stage_iterations) : params.max_iterations;
     const OptimizationReport s = optimizeWithKernel(problem, stage);
     if (k == 0)
     {
@@ -337,6 +338,7 @@ OptimizationReport optimizeGnc(GraphProblem& problem, const GraphOptimizerParams
       inliers.edges.push_back(problem.edges[n]);
   GraphOptimizerParams l2 = stage;
   l2.kernel_alpha = 2;
+  l2.max_iterations = params.max_iterations;
   const OptimizationReport refit = optimizeWithKernel(inliers, l2);
   total.iterations += refit.iterations;
   total.accepted_steps += refit.accepted_steps;

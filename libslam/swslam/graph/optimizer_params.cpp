@@ -44,6 +44,8 @@ void GraphOptimizerParams::check() const
         "graph_optimizer: full_optimization_loop_theta_DEG must be in [0, 180]");
   if (max_iterations < 1)
     throw std::invalid_argument("graph_optimizer: max_iterations must be >= 1");
+  if (gnc_stage_iterations < 1)
+    throw std::invalid_argument("graph_optimizer: gnc_stage_iterations must be >= 1");
   if (!(gnc_factor > 1 && gnc_factor <= 100))
     throw std::invalid_argument("graph_optimizer: gnc_factor must be in (1, 100]");
   if (!(switched_off_weight >= 0 && switched_off_weight < 1))
@@ -65,6 +67,7 @@ void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBas
   else
     throw std::invalid_argument("graph_optimizer: kernel_schedule '" + schedule + "' is not fixed or gnc");
   MRPT_LOAD_CONFIG_VAR(gnc_factor, double, c, s);
+  gnc_stage_iterations = c.read_uint64_t(s, "gnc_stage_iterations", gnc_stage_iterations);
   MRPT_LOAD_CONFIG_VAR(switched_off_weight, double, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_consecutive, bool, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_dense_neighbour, bool, c, s);
@@ -94,6 +97,8 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   c.write(s, "kernel_schedule", std::string(kernelScheduleName(kernel_schedule)), -1, -1,
           "fixed: the kernel from the start; gnc: graduated non-convexity, from a scale where every residual is an inlier down to kernel_c");
   c.write(s, "gnc_factor", gnc_factor, -1, -1, "gnc: the scale's squared multiple is divided by this each stage");
+  c.write(s, "gnc_stage_iterations", gnc_stage_iterations, -1, -1,
+          "gnc: LM iterations per stage before the last");
   c.write(s, "switched_off_weight", switched_off_weight, -1, -1,
           "a robustified edge whose final weight is below this is reported as switched off");
   c.write(s, "robust_consecutive", robust_consecutive, -1, -1, "robustify consecutive edges");

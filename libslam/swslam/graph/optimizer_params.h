@@ -31,7 +31,11 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
   /** GNC: mu, the square of the scale's multiple of kernel_c, starts at
    * max(1, 2 r_max^2 / kernel_c^2) (r_max: the largest robustified residual of the initial
    * guess) and is divided by this each stage down to 1. */
-  double gnc_factor = 1.4;
+  double gnc_factor = 2.0;
+  /** GNC: LM iterations per stage before the last (each stage only needs to bring the poses
+   * near the next, slightly less convex, problem's basin); the last stage and the least-squares
+   * solve on the edges kept get max_iterations. */
+  size_t gnc_stage_iterations = 3;
   /** A robustified edge whose final weight (1 for an inlier) is below this is reported as
    * switched off (OptimizationReport::switched_off). */
   double switched_off_weight = 0.1;

@@ -1,0 +1,115 @@
+#include <swslam/bench/false_loops.h>
+
+#include <swslam/graph/robust_kernel.h>
+#include <swslam/graph/sliding_window.h>
+#include <swslam/graph/synthetic.h>
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace swslam::bench
+{
+namespace
+{
+double rmseBetween(const graph::PoseGraph& a, const graph::PoseGraph& b)
+{
+  double sum = 0;
+  for (const auto id : a.nodeIds())
+  {
+    const auto d = a.pose(id) - b.pose(id);
+    sum += d.x() * d.x() + d.y() * d.y();
+  }
+  return std::sqrt(sum / static_cast<double>(a.nodeCount()));
+}
+
+RobustMethod oursWith(const std::string& name, const graph::GraphOptimizerParams& params)
+{
+  return {name, [params, name](const graph::PoseGraph& g, std::vector<size_t>& off) {
+            SolverRun run{name, 0, 0, 0, g};
+            timeSolver(1, [&] {
+              run.result = g;
+              const graph::OptimizationReport r = graph::optimizeFull(run.result, params);
+              run.iterations = r.iterations;
+              off = r.switched_off;
+            }, run);
+            return run;
+          }};
+}
+}  // namespace
+
+std::vector<size_t> switchedOffEdges(const graph::PoseGraph& graph, const graph::GraphOptimizerParams& params)
+{
+  const graph::GraphSubproblem sub = graph::fullSubproblem(graph, params);
+  const std::vector<double> r = graph::robustResiduals(sub.problem);
+  std::vector<size_t> off;
+  for (size_t n = 0; n < r.size(); ++n)
+    if (sub.problem.edges[n].robust && graph::normalizedBarronWeight(r[n], params.kernel()) < params.switched_off_weight)
+      off.push_back(sub.edge_indices[n]);
+  return off;
+}
+
+std::vector<RobustMethod> ourRobustMethods(const graph::GraphOptimizerParams& params)
+{
+  graph::GraphOptimizerParams l2 = params, fixed = params, gnc = params;
+  l2.kernel_alpha = 2;
+  l2.kernel_schedule = fixed.kernel_schedule = graph::KernelSchedule::Fixed;
+  gnc.robust_consecutive = false;
+  gnc.kernel_schedule = graph::KernelSchedule::Gnc;
+  return {oursWith("least-squares", l2), oursWith("fixed", fixed), oursWith("gnc", gnc)};
+}
+
+std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::PoseGraph& clean,
+                                          const std::vector<size_t>& counts,
+                                          const std::vector<RobustMethod>& methods, std::FILE* progress)
+{
+  graph::PoseGraph optimum = clean;
+  graph::GraphOptimizerParams l2;
+  l2.kernel_alpha = 2;
+  graph::optimizeFull(optimum, l2);
+  std::vector<FalseLoopCase> out;
+  for (const size_t n : counts)
+    for (const bool grouped : {false, true})
+    {
+      if (n == 0 && grouped) continue;
+      graph::PoseGraph g = clean;
+      graph::FalseLoopOptions fo;
+      fo.count = n;
+      fo.grouped = grouped;
+      fo.seed = 7;
+      const std::vector<size_t> added = graph::addFalseLoops(g, fo);
+      const std::set<size_t> truth(added.begin(), added.end());
+      for (const RobustMethod& m : methods)
+      {
+        std::vector<size_t> off;
+        const SolverRun r = m.run(g, off);
+        FalseLoopCase c{name, m.name, n, grouped};
+        c.rmse_to_clean = rmseBetween(r.result, optimum);
+        size_t hits = 0;
+        for (const size_t k : off) hits += truth.count(k);
+        c.switched_off = off.size();
+        c.precision = off.empty() ? 1.0 : static_cast<double>(hits) / static_cast<double>(off.size());
+        c.recall = truth.empty() ? 1.0 : static_cast<double>(hits) / static_cast<double>(truth.size());
+        c.time_s = r.time_s;
+        out.push_back(c);
+        if (progress)
+        {
+          std::fprintf(progress, "%s\n", formatCase(c).c_str());
+          std::fflush(progress);
+        }
+      }
+    }
+  return out;
+}
+
+std::string formatCase(const FalseLoopCase& c)
+{
+  char buf[320];
+  std::snprintf(buf, sizeof(buf),
+                "%-22s %-14s loops=%-5zu %-7s rmse_to_clean_m=%-10.4g off=%-5zu precision=%.3f recall=%.3f time_s=%.3f",
+                c.graph.c_str(), c.method.c_str(), c.false_loops, c.grouped ? "grouped" : "random", c.rmse_to_clean,
+                c.switched_off, c.precision, c.recall, c.time_s);
+  return buf;
+}
+
+}  // namespace swslam::bench

@@ -1,0 +1,55 @@
+#pragma once
+// Robust back ends against false loop closures (doc/graph-optimization.md): a graph's
+// outlier-free optimum, then the same graph with N false loops added (random, or grouped as the
+// Vertigo benchmark), optimized from the odometry guess by each method. Per case: the distance
+// to the outlier-free optimum, precision and recall of the edges switched off, time.
+
+#include <swslam/bench/graph_solvers.h>
+#include <swslam/graph/optimizer_params.h>
+#include <swslam/graph/pose_graph.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace swslam::bench
+{
+/** One method: a name and how it optimizes (it returns the edges it switched off). */
+struct RobustMethod
+{
+  std::string name;
+  std::function<SolverRun(const graph::PoseGraph& graph, std::vector<size_t>& switched_off)> run;
+};
+
+/** The robustified edges of `graph` whose weight under params' kernel is below
+ * params.switched_off_weight at its poses (for solvers that do not report them). */
+std::vector<size_t> switchedOffEdges(const graph::PoseGraph& graph, const graph::GraphOptimizerParams& params);
+
+/** Ours: least squares, the fixed kernel of `params` (its robustified kinds), and graduated
+ * non-convexity to the same kernel with the odometry chain trusted (consecutive edges not
+ * robustified: the loops are what may be false). */
+std::vector<RobustMethod> ourRobustMethods(const graph::GraphOptimizerParams& params);
+
+struct FalseLoopCase
+{
+  std::string graph, method;
+  size_t false_loops = 0;
+  bool grouped = false;
+  double rmse_to_clean = 0;   ///< [m] node positions against the outlier-free optimum
+  double precision = 1, recall = 1;  ///< of the switched-off edges against the false loops
+  size_t switched_off = 0;
+  double time_s = 0;
+};
+
+/** The outlier-free optimum of `clean` (least squares from its guess), then every count of
+ * `counts` false loops (seed fixed), random and grouped, by every method. Each case is also
+ * printed to `progress` as it ends, if given. */
+std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::PoseGraph& clean,
+                                          const std::vector<size_t>& counts,
+                                          const std::vector<RobustMethod>& methods,
+                                          std::FILE* progress = nullptr);
+
+/** One line per case: "graph method loops=N grouped=0 rmse_m=... precision=... recall=... time_s=...". */
+std::string formatCase(const FalseLoopCase& c);
+
+}  // namespace swslam::bench

@@ -1,0 +1,40 @@
+// The false-loop benchmark measures what it says: least squares is pulled away by false loops
+// and switches nothing off; graduated non-convexity switches off exactly the false loops and
+// lands on the outlier-free optimum.
+#include <swslam/bench/false_loops.h>
+
+#include <swslam/graph/synthetic.h>
+
+#include <gtest/gtest.h>
+
+using namespace swslam;
+using namespace swslam::bench;
+
+TEST(FalseLoops, EachMethodIsScoredAgainstTheOutlierFreeOptimum)
+{
+  graph::SyntheticGraphOptions o;
+  o.nodes = 200;
+  o.total_edges = 320;
+  o.dense_neighbours = 0;
+  o.seed = 4;
+  const auto s = graph::makeGridWalkGraph(o);
+  const auto cases = falseLoopCases("grid-200", s.graph, {0, 20}, ourRobustMethods(graph::GraphOptimizerParams()));
+  ASSERT_EQ(cases.size(), 3u * 3u);  // 0 loops; 20 random; 20 grouped: three methods each
+  for (const FalseLoopCase& c : cases)
+  {
+    EXPECT_EQ(formatCase(c).rfind("grid-200", 0), 0u);
+    if (c.method == "least-squares")
+    {
+      EXPECT_EQ(c.switched_off, 0u);
+      if (c.false_loops == 0) EXPECT_LT(c.rmse_to_clean, 1e-6);
+      if (c.false_loops > 0) EXPECT_GT(c.rmse_to_clean, 0.2) << formatCase(c);
+    }
+    if (c.method == "gnc")
+    {
+      EXPECT_LT(c.rmse_to_clean, 0.01) << formatCase(c);
+      EXPECT_EQ(c.switched_off, c.false_loops) << formatCase(c);
+      EXPECT_EQ(c.precision, 1.0) << formatCase(c);
+      EXPECT_EQ(c.recall, 1.0) << formatCase(c);
+    }
+  }
+}

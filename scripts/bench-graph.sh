@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Robust back ends against false loop closures (doc/graph-optimization.md): a Manhattan-like
+# grid walk of 3500 nodes (the edges per node of the M3500 graph), its outlier-free optimum,
+# then 0, 10, 100, 500 and 1000 false loops (fixed seed), random and grouped in runs of 10 as
+# the Vertigo benchmark, optimized from the odometry guess by least squares, the fixed kernel,
+# graduated non-convexity and, when Ceres is built (scripts/install-deps.sh --with-bench),
+# Ceres with a Cauchy loss. Per case: distance to the outlier-free optimum, the edges switched
+# off (precision, recall against the false loops), time. Then the solver comparison of
+# swslam-bench-graph (ours vs MRPT vs Ceres).
+# Usage: scripts/bench-graph.sh [NODES]   (needs a build: scripts/build.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+nodes=${1:-3500}
+bin=build/apps/swslam-bench-graph
+pin=()
+if command -v taskset > /dev/null; then pin=(taskset -c 0); fi
+echo "== false loops on a ${nodes}-node grid walk, one core"
+"${pin[@]}" "$bin" --nodes "$nodes" --false-loops 0 --false-loops 10 --false-loops 100 --false-loops 500 \
+  --false-loops 1000
+echo "== solvers (ours, MRPT, Ceres) on the same graphs"
+"${pin[@]}" "$bin" --repeats 3
