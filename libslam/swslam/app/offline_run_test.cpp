@@ -26,6 +26,22 @@
 using namespace swslam;
 using namespace swslam::app;
 
+namespace
+{
+/** lake-short, deterministic, no render, into DIR/out. */
+OfflineRunOptions quickLakeRun(const std::string& dir)
+{
+  const std::string src = SWSLAM_SOURCE_DIR;
+  OfflineRunOptions o;
+  o.config = src + "/config/default.ini";
+  o.input = src + "/datasets/lake-short/lake-short.rawlog";
+  o.output = dir + "/out";
+  o.deterministic = true;
+  o.render = false;
+  return o;
+}
+}  // namespace
+
 TEST(OfflineRun, LakeShortEndToEndWithinTheAteBoundAndEveryOutputLoads)
 {
   const std::string src = SWSLAM_SOURCE_DIR, dir = test::tempDir("offline_lake");
@@ -138,13 +154,8 @@ TEST(OfflineRun, TruncatedRawlogStillWritesWhatWasMapped)
 
 TEST(OfflineRun, ARunThatTracksNoScanSaysWhyAndWritesNothing)
 {
-  const std::string src = SWSLAM_SOURCE_DIR, dir = test::tempDir("offline_empty");
-  OfflineRunOptions o;
-  o.config = src + "/config/default.ini";
-  o.input = src + "/datasets/lake-short/lake-short.rawlog";
-  o.output = dir + "/out";
-  o.deterministic = true;
-  o.render = false;
+  const std::string dir = test::tempDir("offline_empty");
+  OfflineRunOptions o = quickLakeRun(dir);
   o.sensor_label = "NO_SUCH_LASER";
   std::ostringstream out, err;
   EXPECT_EQ(runOffline(o, out, err), kExitInputError);
@@ -183,13 +194,8 @@ TEST(OfflineRun, AGroundTruthThatDoesNotOverlapTheRunIsAnErrorAfterTheOutputs)
   auto truth = common::readTum(src + "/datasets/lake-short/lake-short.gt.tum");
   for (auto& p : truth) p.t += 1e6;  // a day and a half later
   common::writeTum(dir + "/later.tum", truth);
-  OfflineRunOptions o;
-  o.config = src + "/config/default.ini";
-  o.input = src + "/datasets/lake-short/lake-short.rawlog";
+  OfflineRunOptions o = quickLakeRun(dir);
   o.ground_truth = dir + "/later.tum";
-  o.output = dir + "/out";
-  o.deterministic = true;
-  o.render = false;
   o.max_scans = 200;
   std::ostringstream out, err;
   EXPECT_EQ(runOffline(o, out, err), kExitInputError);
@@ -200,13 +206,8 @@ TEST(OfflineRun, AGroundTruthThatDoesNotOverlapTheRunIsAnErrorAfterTheOutputs)
 
 TEST(OfflineRun, ARerunReplacesEveryOutputOfThePreviousRunAndTwoRunsDoNotShareAFolder)
 {
-  const std::string src = SWSLAM_SOURCE_DIR, dir = test::tempDir("offline_rerun");
-  OfflineRunOptions o;
-  o.config = src + "/config/default.ini";
-  o.input = src + "/datasets/lake-short/lake-short.rawlog";
-  o.output = dir + "/out";
-  o.deterministic = true;
-  o.render = false;
+  const std::string dir = test::tempDir("offline_rerun");
+  OfflineRunOptions o = quickLakeRun(dir);
   o.max_scans = 300;
   {
     OutputFolder other(o.output);  // a second run holding the folder
