@@ -90,7 +90,7 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
   };
   attempt("trajectory.tum", [&](const std::string& p) { common::writeTum(p, results.trajectory); });
   attempt("keyframes.tum", [&](const std::string& p) { common::writeTum(p, results.keyframes); });
-  attempt("graph.graph", [&](const std::string& p) { graph::saveGraph(results.graph, p); });
+  attempt("graph.graph", [&](const std::string& p) { graph::saveGraph(results.graph, p, results.switched_off); });
   attempt("stats.csv", [&](const std::string& p) { common::writeTextAtomically(p, system::formatStatsCsv(results.stats)); });
   attempt("summary.md", [&](const std::string& p) { common::writeTextAtomically(p, summary); });
   return problems;

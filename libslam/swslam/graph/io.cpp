@@ -160,8 +160,11 @@ PoseGraph loadGraph(const std::string& path, GraphLoadReport* report)
   return readGraph(in, path, report);
 }
 
-void writeGraph(const PoseGraph& graph, std::ostream& out)
+void writeGraph(const PoseGraph& graph, std::ostream& out, const std::vector<size_t>& switched_off)
 {
+  std::vector<char> off(graph.edgeCount(), 0);
+  for (const size_t k : switched_off)
+    if (k < off.size()) off[k] = 1;
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
   for (const auto id : graph.nodeIds())
   {
@@ -176,16 +179,16 @@ void writeGraph(const PoseGraph& graph, std::ostream& out)
     const auto& I = e.measurement->cov_inv;
     out << "EDGE_SE2 " << e.from << ' ' << e.to << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi()
         << ' ' << I(0, 0) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2)
-        << ' ' << I(2, 2) << " # kind=" << edgeKindName(e.kind) << '\n';
+        << ' ' << I(2, 2) << " # kind=" << edgeKindName(e.kind) << (off[k] ? " switched_off" : "") << '\n';
   }
 }
 
-void saveGraph(const PoseGraph& graph, const std::string& path)
+void saveGraph(const PoseGraph& graph, const std::string& path, const std::vector<size_t>& switched_off)
 {
   common::writeAtomically(path, [&](const std::string& tmp) {
     std::ofstream out(tmp);
     if (!out) throw std::runtime_error("cannot write graph file '" + tmp + "'");
-    writeGraph(graph, out);
+    writeGraph(graph, out, switched_off);
     if (!out) throw std::runtime_error("error writing graph file '" + tmp + "'");
   });
 }

@@ -20,8 +20,9 @@
 // vertex to itself, an information matrix that is not positive definite, FIX of a missing
 // vertex, a file with no vertex.
 //
-// Written: g2o form (VERTEX_SE2, FIX root, EDGE_SE2 ... # kind=<name>), full precision, which
-// MRPT, g2o and this reader all load.
+// Written: g2o form (VERTEX_SE2, FIX root, EDGE_SE2 ... # kind=<name>, and " switched_off" for
+// an edge the robust kernel switched off), full precision, which MRPT, g2o and this reader all
+// load.
 
 #include <swslam/graph/pose_graph.h>
 
@@ -44,8 +45,8 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
 /** Reads a graph file; throws std::runtime_error if it cannot be opened. */
 PoseGraph loadGraph(const std::string& path, GraphLoadReport* report = nullptr);
 
-void writeGraph(const PoseGraph& graph, std::ostream& out);
+void writeGraph(const PoseGraph& graph, std::ostream& out, const std::vector<size_t>& switched_off = {});
 /** Writes the graph in g2o form, atomically. */
-void saveGraph(const PoseGraph& graph, const std::string& path);
+void saveGraph(const PoseGraph& graph, const std::string& path, const std::vector<size_t>& switched_off = {});
 
 }  // namespace swslam::graph

@@ -137,3 +137,22 @@ TEST(GraphIo, BadRecordsAreErrorsNamingTheLine)
   EXPECT_NE(errorOf("garbage only\n").find("no vertex"), std::string::npos);
   EXPECT_THROW(swslam::graph::loadGraph("/nonexistent/x.graph"), std::runtime_error);
 }
+
+TEST(GraphIo, AnEdgeTheKernelSwitchedOffIsMarkedAndStillLoadsWithItsKind)
+{
+  const auto g = read(std::string(kVertices) + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1 # kind=consecutive\n"
+                                               "EDGE_SE2 0 2 5 5 1 1 0 0 1 0 1 # kind=loop\n");
+  std::ostringstream out;
+  swslam::graph::writeGraph(g, out, {1});
+  const std::string text = out.str();
+  EXPECT_NE(text.find("# kind=loop switched_off\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("# kind=consecutive\n"), std::string::npos) << text;
+  const auto back = read(text);
+  ASSERT_EQ(back.edgeCount(), 2u);
+  EXPECT_EQ(back.edge(1).kind, swslam::graph::EdgeKind::Loop);
+  mrpt::graphs::CNetworkOfPoses2DInf mrpt_graph;
+  const std::string path = swslam::test::tempDir("graph_io_off") + "/off.g2o";
+  swslam::graph::saveGraph(g, path, {1});
+  mrpt_graph.loadFromTextFile(path);
+  EXPECT_EQ(mrpt_graph.edgeCount(), 2u);
+}

@@ -114,3 +114,36 @@ TEST(GraphModule, AVerifiedLoopPullsADriftedChainBack)
   EXPECT_GT(loops, 0u);
   EXPECT_LT(with, 0.3 * without) << "without loops " << without << " m, with " << with << " m";
 }
+
+TEST(GraphModule, APlantedFalseLoopIsSwitchedOffAndTheLoopStaysRight)
+{
+  // The room loop with true consecutive edges, and at node 12 a false loop to node 2 (2 m and
+  // 30 degrees off, with the information of a confident loop). Graduated non-convexity with the
+  // odometry chain trusted switches it off, and the loop stays where it is; the fixed kernel
+  // (today's default) switches it off too but still bends the loop (0.38 m at node 12).
+  const test::RoomLoop room;
+  graph::GraphOptimizerParams gp;
+  gp.kernel_schedule = graph::KernelSchedule::Gnc;
+  gp.robust_consecutive = false;
+  GraphModule g{gp, loop::LoopClosureParams(), plicp::PlicpParams()};
+  size_t false_edge = 0;
+  for (size_t id = 0; id < room.poses.size(); id++)
+  {
+    std::vector<graph::Constraint> edges;
+    if (id > 0) edges.push_back(consecutive(id, room.poses[id] - room.poses[id - 1]));
+    if (id == 12)
+    {
+      graph::Constraint wrong = consecutive(12, (room.poses[12] - room.poses[2]) + CPose2D(2, 0, mrpt::DEG2RAD(30)));
+      wrong.from = 2;
+      wrong.kind = graph::EdgeKind::Loop;
+      false_edge = g.graphCopy().edgeCount() + 1;  // after node 12's consecutive edge
+      edges.push_back(wrong);
+    }
+    g.addNode(roomNode(room, id, room.poses[id], edges));
+  }
+  const GraphStep end = g.optimizeAll(999);
+  EXPECT_EQ(end.report.switched_off, std::vector<size_t>{false_edge});
+  const auto graph = g.graphCopy();
+  for (size_t id = 0; id < room.poses.size(); id++)
+    EXPECT_LT((graph.pose(id) - room.poses[id]).norm(), 0.05) << "node " << id;
+}

@@ -11,16 +11,16 @@ std::string formatStatsCsv(const std::vector<ScanStats>& rows)
   std::ostringstream out;
   out << "scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,"
          "active_sq_residuals,match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,"
-         "full_optimization\n";
+         "full_optimization,switched_off\n";
   char line[512];
   for (const ScanStats& r : rows)
   {
     std::snprintf(line, sizeof(line),
-                  "%zu,%.6f,%s,%zu,%zu,%.6g,%.6g,%.4f,%.4f,%.4f,%.4f,%zu,%d,%zu,%d\n", r.scan,
+                  "%zu,%.6f,%s,%zu,%zu,%.6g,%.6g,%.4f,%.4f,%.4f,%.4f,%zu,%d,%zu,%d,%zu\n", r.scan,
                   r.timestamp, toString(r.source), r.valid_rays, r.correspondences,
                   r.match_sq_residuals, r.active_sq_residuals, r.match_ms, r.tracking_ms,
                   r.graph_ms, r.map_ms, r.keyframe, r.new_node ? 1 : 0, r.loops,
-                  r.full_optimization ? 1 : 0);
+                  r.full_optimization ? 1 : 0, r.switched_off);
     out << line;
   }
   return out.str();

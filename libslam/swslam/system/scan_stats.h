@@ -25,6 +25,7 @@ struct ScanStats
   bool new_node = false;
   size_t loops = 0;  ///< loop edges accepted for this scan's node
   bool full_optimization = false;
+  size_t switched_off = 0;  ///< robustified edges the latest optimization for this scan switched off
 };
 
 /** stats.csv text: a header line, then one line per scan. */

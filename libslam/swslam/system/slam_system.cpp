@@ -198,7 +198,14 @@ void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
       // A step that optimized nothing (e.g. a final refinement that added no edge) keeps the
       // row's residuals: Fig. 7's curve carries the last optimization's.
       if (step.report.status != graph::OptimizationStatus::NothingToOptimize)
+      {
         row.active_sq_residuals = step.report.active_sq_residuals;
+        row.switched_off = step.report.switched_off.size();
+      }
+      // The whole graph's latest optimization says which edges the kernel distrusts.
+      if (step.full && step.report.status != graph::OptimizationStatus::NothingToOptimize &&
+          step.report.status != graph::OptimizationStatus::Diverged)
+        switched_off_ = step.report.switched_off;
       row.loops += step.loops_accepted;
       row.full_optimization = row.full_optimization || step.full;
     }
@@ -377,6 +384,7 @@ RunResults SlamSystem::results() const
   r.skipped = status_.skipped;
   r.refinement_pairs = status_.refinement_pairs;
   r.refinement_edges = status_.refinement_edges;
+  r.switched_off = switched_off_;
   // Rows without an optimization carry the last one's residuals (Fig. 7 is a curve).
   double active = 0;
   for (ScanStats& row : r.stats)

@@ -83,6 +83,8 @@ struct RunResults
   size_t skipped = 0, loops = 0;
   size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t map_bytes = 0;  ///< memory held by the map (grid, sums, per-node contributions)
+  /** Edges (graph indices) the latest full optimization's kernel switched off. */
+  std::vector<size_t> switched_off;
 };
 
 class SlamSystem
@@ -154,6 +156,7 @@ class SlamSystem
   std::vector<double> keyframe_times_;         ///< guarded by results_mutex_
   SystemStatus status_;                        ///< guarded by results_mutex_
   std::string error_;                          ///< guarded by results_mutex_
+  std::vector<size_t> switched_off_;           ///< the latest full optimization's; guarded by results_mutex_
 
   // feed()'s state: the caller's thread only.
   size_t fed_ = 0;
