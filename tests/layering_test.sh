@@ -65,4 +65,4 @@ if ((fail)); then
   echo "layering: FAILED"
   exit 1
 fi
-echo "layering: no include runs up or sideways, no module loop"
+echo "layering: no include runs up, none sideways but from a unit test, no module loop"
