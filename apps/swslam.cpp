@@ -22,7 +22,7 @@ int main(int argc, char** argv)
                                false, 0, "X", cmd);
   TCLAP::SwitchArg deterministic("d", "deterministic", "One thread, fixed order: repeatable results", cmd);
   TCLAP::SwitchArg no_odometry("", "no-odometry", "Ignore odometry in the log (laser only)", cmd);
-  TCLAP::SwitchArg no_progress("q", "quiet", "No progress bar", cmd);
+  TCLAP::SwitchArg no_progress("q", "quiet", "No progress (a bar on a terminal, else a line every 10%)", cmd);
   TCLAP::SwitchArg no_render("", "no-render", "Skip render.png (no OpenGL needed)", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 

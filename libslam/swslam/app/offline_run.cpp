@@ -96,7 +96,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
 
   const auto t0 = std::chrono::steady_clock::now();
   auto slam = std::make_unique<system::SlamSystem>(params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
-  ProgressBar bar(stderr, opts.progress && isTerminal(stderr));
+  ProgressBar bar(stderr, progressStyleFor(stderr, opts.progress), "swslam: ");
   SkipReporter skips(err, params.system.max_printed_warnings, "swslam: ");
   int code = kExitOk;
   size_t read = 0;

@@ -2,14 +2,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <unistd.h>
 
 namespace swslam::app
 {
 bool isTerminal(std::FILE* f) { return ::isatty(fileno(f)) == 1; }
 
+ProgressStyle progressStyleFor(std::FILE* f, bool wanted)
+{
+  return !wanted ? ProgressStyle::Off : isTerminal(f) ? ProgressStyle::Bar : ProgressStyle::Lines;
+}
+
 ProgressBar::ProgressBar(std::FILE* out, bool enabled)
-    : out_(out), enabled_(enabled), start_(std::chrono::steady_clock::now()), last_draw_(start_)
+    : ProgressBar(out, enabled ? ProgressStyle::Bar : ProgressStyle::Off)
+{
+}
+
+ProgressBar::ProgressBar(std::FILE* out, ProgressStyle style, std::string prefix)
+    : out_(out), style_(style), prefix_(std::move(prefix)), start_(std::chrono::steady_clock::now()),
+      last_draw_(start_)
 {
 }
 
@@ -35,7 +48,8 @@ std::string ProgressBar::format(double fraction, size_t scans, double elapsed_s,
 
 bool ProgressBar::due() const
 {
-  return enabled_ && (!drawn_ || std::chrono::steady_clock::now() - last_draw_ >= std::chrono::milliseconds(200));
+  return style_ != ProgressStyle::Off &&
+         (!drawn_ || std::chrono::steady_clock::now() - last_draw_ >= std::chrono::milliseconds(200));
 }
 
 void ProgressBar::update(double fraction, size_t scans, const std::string& extra)
@@ -45,13 +59,23 @@ void ProgressBar::update(double fraction, size_t scans, const std::string& extra
   last_draw_ = now;
   drawn_ = true;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  std::fprintf(out_, "\r%s\033[K", format(fraction, scans, elapsed, extra).c_str());
+  if (style_ == ProgressStyle::Lines)
+  {
+    const int tenths = std::isfinite(fraction) ? static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 10) : 0;
+    if (tenths <= tenths_shown_) return;
+    tenths_shown_ = tenths;
+    const std::string text = format(fraction, scans, elapsed, extra);
+    // Without the bar itself: "NN% ... ETA m:ss extra".
+    std::fprintf(out_, "%s%s\n", prefix_.c_str(), text.substr(text.find(']') + 2).c_str());
+  }
+  else
+    std::fprintf(out_, "\r%s\033[K", format(fraction, scans, elapsed, extra).c_str());
   std::fflush(out_);
 }
 
 void ProgressBar::done()
 {
-  if (!enabled_ || !drawn_) return;
+  if (style_ != ProgressStyle::Bar || !drawn_) return;
   std::fprintf(out_, "\r\033[K");
   std::fflush(out_);
 }

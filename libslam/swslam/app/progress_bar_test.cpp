@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <thread>
 
 using swslam::app::ProgressBar;
 
@@ -35,4 +39,31 @@ TEST(ProgressBar, DueOnlyWhenEnabledAndNotJustDrawn)
   on.update(0.5, 10);
   EXPECT_FALSE(on.due());  // redrawn at most every 200 ms
   std::fclose(sink);
+}
+
+TEST(ProgressBar, OffATerminalAPlainLineAtEveryTenth)
+{
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  swslam::app::ProgressBar lines(f, swslam::app::ProgressStyle::Lines, "swslam: ");
+  for (int k = 1; k <= 100; k++)
+  {
+    // The figures are gathered at most every 200 ms (due()); a line is printed only when a new
+    // tenth is reached.
+    if (k % 10 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(210));
+    if (lines.due()) lines.update(k / 100.0, 10 * k, "3 nodes");
+  }
+  lines.done();
+  std::rewind(f);
+  std::string text;
+  for (int c; (c = std::fgetc(f)) != EOF;) text += static_cast<char>(c);
+  std::fclose(f);
+  EXPECT_EQ(text.find('\r'), std::string::npos) << text;
+  EXPECT_EQ(text.find('\033'), std::string::npos) << text;
+  EXPECT_NE(text.find("swslam:  10% "), std::string::npos) << text;
+  EXPECT_NE(text.find("swslam: 100% 1000 scans"), std::string::npos) << text;
+  EXPECT_NE(text.find("3 nodes\n"), std::string::npos) << text;
+  size_t count = 0;
+  for (size_t at = text.find("swslam:"); at != std::string::npos; at = text.find("swslam:", at + 1)) count++;
+  EXPECT_EQ(count, 10u) << text;  // one line per tenth, none twice
 }

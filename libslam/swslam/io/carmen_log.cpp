@@ -12,7 +12,7 @@ namespace swslam::io
 {
 CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& params,
                                  WarningSink warn)
-    : path_(path), params_(params), warn_(std::move(warn))
+    : path_(path), params_(params), warn_(std::move(warn)), progress_(path)
 {
   stats_.repairing = params_.repair_timestamps;
   params_.check();
@@ -239,11 +239,7 @@ bool CarmenLogReader::next(CarmenRecord& record)
   return false;
 }
 
-double CarmenLogReader::fractionRead() const
-{
-  const double total = static_cast<double>(file_.getTotalBytesCount());
-  return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
-}
+double CarmenLogReader::fractionRead() const { return progress_.fraction(file_.getPosition()); }
 
 size_t CarmenStats::timestampProblems() const
 {

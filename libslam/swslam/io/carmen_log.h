@@ -4,6 +4,7 @@
 // CObservationOdometry for ODOM, each with its line's own timestamp. PARAM lines set the
 // laser offsets, FOV and maximum range. Rules (max range, FOV, timestamps): doc/carmen.md.
 
+#include <swslam/io/read_progress.h>
 #include <swslam/io/carmen_line.h>
 #include <swslam/io/carmen_params.h>
 #include <swslam/io/carmen_rules.h>
@@ -94,6 +95,7 @@ class CarmenLogReader
   CarmenParams params_;
   WarningSink warn_;
   mrpt::io::CFileGZInputStream file_;
+  ReadProgress progress_;
   std::string buffer_;
   size_t buffer_pos_ = 0;
   bool eof_ = false;

@@ -95,7 +95,7 @@ class RawlogReader::LookaheadArchive : public mrpt::serialization::CArchive
   std::string ahead_;
 };
 
-RawlogReader::RawlogReader(const std::string& path) : path_(path)
+RawlogReader::RawlogReader(const std::string& path) : path_(path), progress_(path)
 {
   bool opened = false;
   try
@@ -158,10 +158,6 @@ bool RawlogReader::next(RawlogItem& item)
   return true;
 }
 
-double RawlogReader::fractionRead() const
-{
-  const double total = static_cast<double>(file_.getTotalBytesCount());
-  return total > 0 ? std::min(1.0, static_cast<double>(file_.getPosition()) / total) : 1.0;
-}
+double RawlogReader::fractionRead() const { return progress_.fraction(file_.getPosition()); }
 
 }  // namespace swslam::io

@@ -2,6 +2,8 @@
 // Streaming reader of MRPT rawlogs in both formats (observation-only, and
 // action/sensory-frame pairs). Reads one entry at a time; never loads the whole file.
 
+#include <swslam/io/read_progress.h>
+
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation.h>
@@ -59,6 +61,7 @@ class RawlogReader
  private:
   std::string path_;
   mrpt::io::CFileGZInputStream file_;
+  ReadProgress progress_;
   class LookaheadArchive;
   std::unique_ptr<LookaheadArchive> archive_;
   std::deque<RawlogItem> pending_;  ///< items of an already-read sensory frame / action set
