@@ -8,8 +8,8 @@
 int main(int argc, char** argv)
 {
   TCLAP::CmdLine cmd("swslam-live: live 2D LiDAR SLAM from a Hokuyo (SCIP 2.0, serial or Ethernet)", ' ', "0.1");
-  TCLAP::ValueArg<std::string> config("c", "config", "swslam config (config/default.ini), or one file with the sensor section too",
-                                      true, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "swslam config (default: the installed config/default.ini), or one "
+                                      "file with the sensor section too", false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> sensor("", "sensor-config", "MRPT rawlog-grabber .ini with the sensor section (e.g. hokuyo_UTM.ini)",
                                       false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> section("s", "sensor-section", "Sensor section (default LASER_2D)", false,

@@ -2,6 +2,7 @@
 // 0.1 m for the offline map (see doc/system.md).
 #include "cli.h"
 
+#include <swslam/app/default_config.h>
 #include <swslam/app/regen_map.h>
 #include <swslam/app/run_outputs.h>
 #include <swslam/graph/io.h>
@@ -17,13 +18,14 @@ int main(int argc, char** argv)
                                    true, "", "DIR", cmd);
   TCLAP::ValueArg<std::string> input("i", "input", "The run's input log", true, "", "LOG", cmd);
   TCLAP::ValueArg<std::string> output("o", "output", "Where to write the map files", true, "", "DIR", cmd);
-  TCLAP::ValueArg<std::string> config("c", "config", "Configuration ([map], [carmen])", true, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Configuration ([map], [carmen]; default: the installed "
+                                      "config/default.ini)", false, "", "INI", cmd);
   TCLAP::ValueArg<double> resolution("", "resolution", "Cell size [m] (default: the config's)", false, 0, "M", cmd);
   TCLAP::SwitchArg no_render("", "no-render", "Skip render.png", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
-    swslam::system::SystemParams params = swslam::system::loadSystemParams(config.getValue());
+    swslam::system::SystemParams params = swslam::system::loadSystemParams(swslam::app::configOrDefault(config.getValue()));
     if (resolution.isSet()) params.map.resolution = resolution.getValue();
     swslam::system::RunResults run_data;
     swslam::graph::GraphLoadReport load;

@@ -8,7 +8,8 @@
 int main(int argc, char** argv)
 {
   TCLAP::CmdLine cmd("swslam: robust sliding-window 2D LiDAR SLAM (offline replay)", ' ', "0.1");
-  TCLAP::ValueArg<std::string> config("c", "config", "Configuration (.ini)", true, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Configuration (.ini; default: the installed config/default.ini)",
+                                      false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> input("i", "input", "MRPT rawlog, or CARMEN log (.log, .log.gz, .clf)",
                                      true, "", "LOG", cmd);
   TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created if missing)", true, "",

@@ -1,5 +1,6 @@
 #include <swslam/app/live_run.h>
 
+#include <swslam/app/default_config.h>
 #include <swslam/app/exit_codes.h>
 #include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
@@ -67,7 +68,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     if (!(opts.save_period >= 0) || !(opts.duration >= 0) || !std::isfinite(opts.save_period) ||
         !std::isfinite(opts.duration))
       throw std::invalid_argument("--save-period and --duration must be finite and >= 0");
-    const auto cfg = common::readIniFile(opts.config);
+    const auto cfg = common::readIniFile(configOrDefault(opts.config));
     const auto sensor_file = opts.sensor_config.empty() ? nullptr : common::readIniFile(opts.sensor_config);
     // One file holding both, or swslam's config plus the sensor's own rawlog-grabber file
     // (whose other sections, e.g. [global], are rawlog-grabber's and not read here).

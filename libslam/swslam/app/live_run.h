@@ -10,7 +10,7 @@ namespace swslam::app
 {
 struct LiveRunOptions
 {
-  std::string config;                  ///< swslam sections (config/default.ini)...
+  std::string config;                  ///< swslam sections (empty: the installed default.ini)...
   std::string sensor_config;           ///< ...and an MRPT rawlog-grabber .ini with the sensor
                                        ///< section (empty: the sensor section is in `config`)
   std::string sensor_section = "LASER_2D";

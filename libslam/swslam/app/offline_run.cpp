@@ -1,5 +1,6 @@
 #include <swslam/app/offline_run.h>
 
+#include <swslam/app/default_config.h>
 #include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
@@ -80,7 +81,9 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   std::optional<OutputFolder> folder;
   try
   {
-    params = system::loadSystemParams(opts.config);
+    const std::string config = configOrDefault(opts.config);
+    if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
+    params = system::loadSystemParams(config);
     if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
     source = io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label}, params.carmen);
     folder.emplace(opts.output);

@@ -11,7 +11,7 @@ namespace swslam::app
 {
 struct OfflineRunOptions
 {
-  std::string config;        ///< .ini (config/default.ini)
+  std::string config;        ///< .ini; empty: the installed config/default.ini (default_config.h)
   std::string input;         ///< rawlog, or CARMEN log (.log, .log.gz, .clf)
   std::string output;        ///< output directory (created if missing)
   std::string ground_truth;  ///< TUM file for ATE/RPE; empty: none
