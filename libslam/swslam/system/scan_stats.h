@@ -46,7 +46,7 @@ struct RunSummary
   size_t scans = 0, skipped_scans = 0, nodes = 0, constraints = 0, loops = 0;
   size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t fallback_scans = 0;  ///< scans whose pose came from odometry or constant motion
-  double distance = 0;        ///< [m] along the every-scan trajectory
+  double distance = 0;        ///< [m] along the keyframes, then to the last scan
   double duration = 0;        ///< [s] of sensor time
   double wall_time = 0;       ///< [s] processing time
   size_t map_bytes = 0;       ///< memory held by the map
