@@ -145,27 +145,39 @@ TEST(MapFiles, RosMapParsesAndLoadsInMrpt)
   EXPECT_THROW(writeRosMap(g, dir + "/map.txt", {}), std::invalid_argument);
 }
 
-TEST(MapFiles, OctomapHoldsOneVoxelPerOccupiedCell)
+TEST(MapFiles, OctomapHoldsAVoxelPerOccupiedAndPerFreeCell)
 {
   const auto g = roomMap();
   const auto dir = test::tempDir("map_bt");
-  const size_t n = writeOctomap(g, dir + "/map.bt", 0.65);
-  EXPECT_EQ(n, countOccupied(g, 0.65));
-  ASSERT_GT(n, 100u);
+  const OctomapCounts n = writeOctomap(g, dir + "/map.bt", 0.65, 0.25);
+  EXPECT_EQ(n.occupied, countOccupied(g, 0.65));
+  ASSERT_GT(n.occupied, 100u);
+  ASSERT_GT(n.free, 1000u);  // the space the rays crossed
   octomap::OcTree tree(0.5);
   ASSERT_TRUE(tree.readBinary(dir + "/map.bt"));
   EXPECT_NEAR(tree.getResolution(), g.getResolution(), 1e-7);
-  size_t leaves = 0;
+  size_t occupied = 0, free = 0;
   for (auto it = tree.begin_leafs(); it != tree.end_leafs(); ++it)
   {
-    ASSERT_TRUE(tree.isNodeOccupied(*it));
     ASSERT_EQ(it.getDepth(), tree.getTreeDepth());
     const auto c = it.getCoordinate();
     EXPECT_NEAR(c.z(), 0.5 * g.getResolution(), 1e-6);
-    EXPECT_GT(1.0 - g.getPos(c.x(), c.y()), 0.65) << c.x() << " " << c.y();
-    leaves++;
+    const double p = 1.0 - g.getPos(c.x(), c.y());
+    if (tree.isNodeOccupied(*it))
+    {
+      EXPECT_GT(p, 0.65) << c.x() << " " << c.y();
+      occupied++;
+    }
+    else
+    {
+      EXPECT_LT(p, 0.25) << c.x() << " " << c.y();
+      free++;
+    }
   }
-  EXPECT_EQ(leaves, n);
+  EXPECT_EQ(occupied, n.occupied);
+  EXPECT_EQ(free, n.free);
+  // An unobserved cell is unknown: no voxel.
+  EXPECT_EQ(tree.search(octomap::point3d(g.getXMin() + 1e-3, g.getYMin() + 1e-3, 0.5 * g.getResolution())), nullptr);
 }
 
 TEST(MapFiles, FailedWriteLeavesThePreviousFileIntact)
@@ -179,7 +191,7 @@ TEST(MapFiles, FailedWriteLeavesThePreviousFileIntact)
       {"map.gridmap.gz", [](const auto& m, const auto& p) { writeGridmap(m, p); }},
       {"map.png", [](const auto& m, const auto& p) { writeMapPng(m, p); }},
       {"map.yaml", [](const auto& m, const auto& p) { writeRosMap(m, p, {}); }},
-      {"map.bt", [](const auto& m, const auto& p) { writeOctomap(m, p, 0.65); }},
+      {"map.bt", [](const auto& m, const auto& p) { writeOctomap(m, p, 0.65, 0.25); }},
       {"render.png", [](const auto& m, const auto& p) {
          RenderInput r;
          r.width = 64, r.height = 48;

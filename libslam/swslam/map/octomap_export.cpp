@@ -28,20 +28,26 @@ size_t countOccupied(const mrpt::maps::COccupancyGridMap2D& grid, double occupie
   return n;
 }
 
-size_t writeOctomap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path,
-                    double occupied_thresh)
+OctomapCounts writeOctomap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path,
+                           double occupied_thresh, double free_thresh)
 {
   // MRPT keeps the resolution as a float (0.1f = 0.100000001): give OctoMap the decimal.
   const double res = std::round(double(grid.getResolution()) * 1e7) / 1e7;
   octomap::OcTree tree(res);
-  size_t n = 0;
+  OctomapCounts n;
   // The grid's cells are aligned on multiples of the resolution, as OctoMap's voxels:
   // each cell centre falls in exactly one voxel of the layer z in [0, res).
   const auto z = static_cast<float>(0.5 * res);
-  forEachOccupied(grid, occupied_thresh, [&](unsigned cx, unsigned cy) {
-    tree.updateNode(octomap::point3d(grid.idx2x(cx), grid.idx2y(cy), z), true);
-    n++;
-  });
+  for (unsigned cy = 0; cy < grid.getSizeY(); cy++)
+    for (unsigned cx = 0; cx < grid.getSizeX(); cx++)
+    {
+      const double p = 1.0 - grid.getCell(static_cast<int>(cx), static_cast<int>(cy));
+      if (p > occupied_thresh || p < free_thresh)
+      {
+        tree.updateNode(octomap::point3d(grid.idx2x(cx), grid.idx2y(cy), z), p > occupied_thresh);
+        (p > occupied_thresh ? n.occupied : n.free)++;
+      }
+    }
   common::writeAtomically(path, [&](const std::string& tmp) {
     if (!tree.writeBinary(tmp)) throw std::runtime_error("OctoMap could not write '" + tmp + "'");
   });

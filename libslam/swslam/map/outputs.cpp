@@ -35,7 +35,7 @@ std::vector<OutputProblem> writeMapOutputs(const std::string& dir,
   attempt("map.yaml", [&](const std::string& p) {
     writeRosMap(grid, p, RosMapThresholds{params.occupied_thresh, params.free_thresh});
   });
-  attempt("map.bt", [&](const std::string& p) { writeOctomap(grid, p, params.occupied_thresh); });
+  attempt("map.bt", [&](const std::string& p) { writeOctomap(grid, p, params.occupied_thresh, params.free_thresh); });
   if (render) attempt("render.png", [&](const std::string& p) { renderMap(grid, *render, p); });
   return problems;
 }
