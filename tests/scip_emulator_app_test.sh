@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # swslam-scip-emulator end to end: it serves lake-short on a free port, answers PP and
-# streams the scans of a finite MD request over TCP (bash's /dev/tcp), and stops cleanly
-# on SIGTERM; a scenario whose sensor is not a UTM-30LX is refused naming the key.
+# streams the scans of a finite MD request over TCP (bash's /dev/tcp), survives SIGSTOP and
+# SIGCONT, and stops cleanly on SIGTERM; a scenario whose sensor is not a UTM-30LX is refused naming the key.
 # Usage: scip_emulator_app_test.sh SOURCE_DIR BINARY_DIR
 set -euo pipefail
 src=$1
@@ -55,6 +55,13 @@ for left in 02 01 00; do
   ((${#reply[@]} == 2 + 1 + 51)) || fail "scan of ${#reply[@]} lines"
 done
 exec 4>&-
+
+# Stopped and continued (SIGSTOP, SIGCONT), it goes on serving until told to end.
+kill -STOP "$pid"
+sleep 0.2
+kill -CONT "$pid"
+sleep 0.3
+kill -0 "$pid" 2> /dev/null || fail "it exited on SIGSTOP/SIGCONT"
 
 kill -TERM "$pid"
 status=0

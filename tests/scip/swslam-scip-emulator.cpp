@@ -4,6 +4,8 @@
 #include "scip_emulator.h"
 #include "scip_sim_source.h"
 
+#include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <ctime>
 #include <iostream>
@@ -75,15 +77,25 @@ int main(int argc, char** argv)
     std::cout << "swslam-scip-emulator: " << opt.sensor.model << " on " << opt.address << ":"
               << emulator.port() << ", " << source.pathScans() << " scans along the path at "
               << source.rate() << " Hz" << std::endl;
-    if (duration.getValue() > 0)
+    // Until SIGINT/SIGTERM or the end of the duration. A stop and continue (SIGSTOP, SIGCONT)
+    // interrupts the wait (EINTR): wait again, for what is left.
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(duration.getValue());
+    for (;;)
     {
-      timespec ts{};
-      ts.tv_sec = static_cast<time_t>(duration.getValue());
-      ts.tv_nsec = static_cast<long>((duration.getValue() - ts.tv_sec) * 1e9);
-      sigtimedwait(&signals, nullptr, &ts);
+      int got = 0;
+      if (duration.getValue() > 0)
+      {
+        const double left = std::chrono::duration<double>(end - std::chrono::steady_clock::now()).count();
+        if (left <= 0) break;
+        timespec ts{};
+        ts.tv_sec = static_cast<time_t>(left);
+        ts.tv_nsec = static_cast<long>((left - static_cast<double>(ts.tv_sec)) * 1e9);
+        got = sigtimedwait(&signals, nullptr, &ts);
+      }
+      else
+        got = sigwaitinfo(&signals, nullptr);
+      if (got >= 0 || errno != EINTR) break;  // a signal, or the duration is over (EAGAIN)
     }
-    else
-      sigwaitinfo(&signals, nullptr);
     emulator.stop();
     const auto s = emulator.stats();
     std::cout << "swslam-scip-emulator: " << s.connections << " connections, " << s.scans_sent
