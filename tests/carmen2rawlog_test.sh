@@ -28,6 +28,14 @@ cat "$DIR/summary.txt"
 [ -s "$DIR/out.rawlog" ] || fail "no rawlog"
 gzip -t "$DIR/out.rawlog" || fail "rawlog is not valid gzip"
 grep -q "FLASER: 12 scans, beams 180, aperture 180 deg, max_range 81.91 m" "$DIR/summary.txt" || fail "scan summary"
+
+# One 500 m glitch among the readings: the saturation stays 81.91 m (it used to become
+# 500.01 m, every "no return" ray a wall), and the glitch is said.
+zcat "$DIR/tiny.log.gz" | awk '/^FLASER 180/ && !done { $50 = "500.0"; done = 1 } { print }' | gzip > "$DIR/glitch.log.gz"
+"$BIN" -i "$DIR/glitch.log.gz" -o "$DIR/glitch.rawlog" > "$DIR/glitch.txt" 2> "$DIR/glitch.err" ||
+  fail "glitch conversion failed: $(cat "$DIR/glitch.err")"
+grep -q "max_range 81.91 m (saturation detected)" "$DIR/glitch.txt" || fail "glitch moved the max range: $(grep FLASER: "$DIR/glitch.txt")"
+grep -q "1 reading(s) above the saturation value 81.91 m (largest 500.00 m)" "$DIR/glitch.err" || fail "glitch not said"
 grep -q "invalid rays 6 of 2160" "$DIR/summary.txt" || fail "max-range readings not invalid"
 grep -q "odometry: 12" "$DIR/summary.txt" || fail "odometry count"
 grep -q "malformed lines: 1 (first at line 18)" "$DIR/summary.txt" || fail "malformed count"

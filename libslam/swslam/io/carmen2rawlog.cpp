@@ -89,6 +89,7 @@ std::string formatCarmenStats(const CarmenStats& s)
     o << "laser timestamps negative: all timestamps shifted by +" << s.timestamp_offset
       << " s (negative times are not representable in MRPT)\n";
   if (s.geometry_warnings) o << "geometry warnings: " << s.geometry_warnings << "\n";
+  if (s.saturation_glitches) o << "readings above the saturation value (no return): " << s.saturation_glitches << "\n";
   return o.str();
 }
 

@@ -152,6 +152,36 @@ TEST(CarmenRules, NoSaturationWithoutACluster)
   EXPECT_DOUBLE_EQ(*d.threshold(), 29.9);
 }
 
+TEST(CarmenRules, AGlitchAboveThePileDoesNotHideTheSaturation)
+{
+  // 969 "no return" rays at 81.91 m among 40000 readings up to 60 m, and one reading of 500 m:
+  // the maximum range stays 81.91 m, the glitch is counted.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.5, 60.0);
+  swslam::io::SaturationDetector d(0.005, 5);
+  for (int i = 0; i < 40000; i++) d.add(u(rng));
+  for (int i = 0; i < 969; i++) d.add(81.91);
+  d.add(500.0);
+  ASSERT_TRUE(d.threshold().has_value());
+  EXPECT_DOUBLE_EQ(*d.threshold(), 81.91);
+  EXPECT_EQ(d.glitchesAbove(), 1u);
+  EXPECT_DOUBLE_EQ(d.largest(), 500.0);
+
+  // The smooth tail of a log with no saturation is no pile, glitch or not.
+  swslam::io::SaturationDetector tail(0.005, 5);
+  for (int i = 0; i < 40000; i++) tail.add(u(rng));
+  tail.add(500.0);
+  EXPECT_FALSE(tail.threshold().has_value());
+  EXPECT_EQ(tail.glitchesAbove(), 0u);
+
+  // As many readings above the pile as make a pile themselves: no glitches, the old rule.
+  swslam::io::SaturationDetector many(0.005, 5);
+  for (int i = 0; i < 969; i++) many.add(81.91);
+  for (int i = 0; i < 6; i++) many.add(500.0);
+  ASSERT_TRUE(many.threshold().has_value());
+  EXPECT_DOUBLE_EQ(*many.threshold(), 500.0);
+}
+
 TEST(CarmenRules, TimestampsDetectedAndRepaired)
 {
   const std::vector<double> raw = {0, 0, 0.2, 0.2, 0.1, 0.4, 4.3e9, 4.3e9};

@@ -3,6 +3,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -98,6 +99,14 @@ void CarmenLogReader::prescan()
   {
     saturation_[label] = d.threshold();
     largest_[label] = d.largest();
+    if (const size_t glitches = d.glitchesAbove())
+    {
+      stats_.saturation_glitches += glitches;
+      char buf[200];
+      std::snprintf(buf, sizeof(buf), "%zu reading(s) above the saturation value %.2f m (largest %.2f m): glitches, "
+                    "read as no return", glitches, *saturation_[label], d.largest());
+      warn(printed_geometry_, path_ + ": " + label + ": " + buf);
+    }
   }
   double earliest = 0;
   for (const auto& [stream, t] : times)

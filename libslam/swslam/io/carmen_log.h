@@ -53,6 +53,7 @@ struct CarmenStats
   double timestamp_offset = 0;
   size_t timestampProblems() const;
   size_t geometry_warnings = 0;
+  size_t saturation_glitches = 0;  ///< readings above a laser's saturation pile (no return)
   size_t scans() const;
 };
 

@@ -21,6 +21,9 @@ void SaturationDetector::add(double range)
     if (near_top_.size() > 2 * pruned_size_ + 16) prune();
   }
   if (range >= max_ * (1 - rel_tol_)) near_top_.push_back(range);
+  Bin& bin = bins_[static_cast<int64_t>(std::floor(std::log(range) / std::log1p(rel_tol_)))];
+  bin.min = bin.count == 0 ? range : std::min(bin.min, range);
+  bin.count++;
 }
 
 void SaturationDetector::prune()
@@ -38,14 +41,49 @@ size_t SaturationDetector::clusterSize() const
   return std::count_if(near_top_.begin(), near_top_.end(), [low](double r) { return r >= low; });
 }
 
+std::optional<std::pair<double, size_t>> SaturationDetector::pileBelowGlitches() const
+{
+  const size_t min_count = std::max<size_t>(min_count_, 1);
+  const auto count = [&](int64_t key) {
+    const auto it = bins_.find(key);
+    return it == bins_.end() ? size_t(0) : it->second.count;
+  };
+  size_t above = 0;
+  for (auto it = bins_.rbegin(); it != bins_.rend() && above < min_count; above += it->second.count, ++it)
+  {
+    const int64_t key = it->first;
+    const size_t band = it->second.count + count(key - 1), below = count(key - 2) + count(key - 3);
+    if (band < min_count || band < 3 * (below + 1)) continue;
+    // The pile's own bin when it holds the pile alone: the lower bin is then real readings.
+    const auto lower = bins_.find(key - 1);
+    const double smallest = it->second.count >= min_count || lower == bins_.end()
+                                ? it->second.min
+                                : std::min(it->second.min, lower->second.min);
+    return std::make_pair(smallest, above);
+  }
+  return std::nullopt;
+}
+
 std::optional<double> SaturationDetector::threshold() const
 {
-  if (clusterSize() < std::max<size_t>(min_count_, 1)) return std::nullopt;
+  if (clusterSize() < std::max<size_t>(min_count_, 1))
+  {
+    const auto pile = pileBelowGlitches();
+    if (!pile) return std::nullopt;
+    return pile->first;
+  }
   const double low = max_ * (1 - rel_tol_);
   double smallest = max_;
   for (double r : near_top_)
     if (r >= low) smallest = std::min(smallest, r);
   return smallest;
+}
+
+size_t SaturationDetector::glitchesAbove() const
+{
+  if (clusterSize() >= std::max<size_t>(min_count_, 1)) return 0;
+  const auto pile = pileBelowGlitches();
+  return pile ? pile->second : 0;
 }
 
 double medianPositivePeriod(const std::vector<double>& times, double max_gap, double fallback)
