@@ -219,15 +219,21 @@ void ScipEmulator::run()
   };
   uint64_t next_k = 1;  // the first scan period not yet due
   Connection c;
+  bool paused = false;  // Faults::pause_after_scans: once, over the emulator's life
+  Clock::time_point pause_end;
 
   for (;;)
   {
     bool drop = false;
+    uint64_t pause_after = 0;
+    unsigned pause_ms = 0;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (stop_requested_) break;
       drop = drop_requested_;
       drop_requested_ = false;
+      pause_after = faults_.pause_after_scans;
+      pause_ms = faults_.pause_ms;
     }
     if (drop && c.fd >= 0) closeConnection(c, true);
     const bool measuring = c.fd >= 0 && !c.closing && protocol_.measurement();
@@ -275,6 +281,17 @@ void ScipEmulator::run()
     }
 
     const auto now = Clock::now();
+    // A paused link: nothing goes out until the pause ends (see Faults::pause_after_scans).
+    if (pause_after && c.scans >= pause_after && !paused)
+    {
+      paused = true;
+      pause_end = now + std::chrono::milliseconds(pause_ms);
+    }
+    if (paused && now < pause_end)
+    {
+      next_k = periodOf(now) + 1;
+      continue;
+    }
     if (c.fd >= 0 && !c.closing && protocol_.measurement())
     {
       // Every due period gets its scan, late ones too (as a sensor's buffer would send

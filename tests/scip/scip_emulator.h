@@ -32,6 +32,10 @@ struct Faults
   uint64_t drop_after_scans = 0;  ///< close a connection once it got this many scans (0: never)
   unsigned drops = 1;             ///< connections dropped that way; later ones stream on
   bool drop_mid_frame = false;    ///< the last scan before a drop is cut half way
+  /** The link goes silent once a connection got this many scans (0: never), the sensor alive:
+   * for pause_ms nothing is sent (the scans of that time are lost), then streaming goes on. */
+  uint64_t pause_after_scans = 0;
+  unsigned pause_ms = 0;
   /** Faults of the scans sent, by their number (0-based, counted over all connections). */
   std::map<uint64_t, Fault> scans;
   /** Faults of every reply to a command, by its two-letter code ("PP", "MD", "QT", ...;

@@ -192,9 +192,12 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
   }
   catch (const std::exception& e)
   {
+    // After a pause longer than its own timeout MRPT's driver takes the link for dead and
+    // throws on every call: a stall as any other, or the link would never come back.
     stats_.errors++;
     trouble(std::string("driver error: ") + mrpt::system::trim(e.what()).substr(0, 200));
     std::this_thread::sleep_for(milliseconds(50));
+    checkStall();
     return nullptr;
   }
   if (there)
@@ -220,23 +223,26 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
     trouble("the driver reports a hardware/link error");
     std::this_thread::sleep_for(milliseconds(20));  // it may fail at once, on every call
   }
-  if (steady_clock::now() - last_scan_ > options_.stall_timeout)
-  {
-    // Connected but silent: start over (over Ethernet the driver is ours to replace; over
-    // serial the driver reopens the port by itself, so it is kept).
-    stats_.stalls++;
-    if (stream_)
-    {
-      dropDriver();
-      retryLater("no scan for " + std::to_string(options_.stall_timeout.count()) + " ms (stopped answering?)");
-    }
-    else
-    {
-      trouble("no scan for " + std::to_string(options_.stall_timeout.count()) + " ms (stopped answering?)");
-      last_scan_ = steady_clock::now();
-    }
-  }
+  checkStall();
   return nullptr;
+}
+
+void HokuyoLink::checkStall()
+{
+  if (steady_clock::now() - last_scan_ <= options_.stall_timeout) return;
+  // Connected but silent: start over (over Ethernet the driver is ours to replace; over
+  // serial the driver reopens the port by itself, so it is kept).
+  stats_.stalls++;
+  if (stream_)
+  {
+    dropDriver();
+    retryLater("no scan for " + std::to_string(options_.stall_timeout.count()) + " ms (stopped answering?)");
+  }
+  else
+  {
+    trouble("no scan for " + std::to_string(options_.stall_timeout.count()) + " ms (stopped answering?)");
+    last_scan_ = steady_clock::now();
+  }
 }
 
 void HokuyoLink::dropDriver()

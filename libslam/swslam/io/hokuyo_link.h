@@ -68,6 +68,8 @@ class HokuyoLink
   void trouble(const std::string& why);     ///< reported once per outage
   void retryLater(const std::string& why);  ///< no driver: try again after the backoff
   void dropDriver();
+  /** No scan for stall_timeout: count a stall and start over. */
+  void checkStall();
 
   std::string ini_text_, ini_without_link_, section_;
   std::shared_ptr<TcpStream> stream_;  ///< Ethernet link (serial: the driver's own port)

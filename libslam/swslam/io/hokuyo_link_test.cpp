@@ -10,6 +10,10 @@
 // - it ignores checksums, silently skips a scan whose echo is wrong, and reports a scan
 //   with a truncated line (hardwareError and an error log);
 // - the aperture it reports is 1081 steps x 0.25 deg = 270.25 deg, not 270 deg.
+#include <swslam/io/hokuyo_link.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+
 #include "scip/scip_emulator.h"
 #include "scip/scip_sim_source.h"
 #include "sim_test_scenario.h"
@@ -255,4 +259,30 @@ TEST(HokuyoDriver, MalformedStartupReplyFailsInitializeThenRecovers)
 }
 
 }  // namespace
+TEST(HokuyoLink, ALinkThatPausesPastTheDriversTimeoutComesBack)
+{
+  // The link goes silent for 1.5 s after 20 scans, the sensor alive. MRPT's driver then takes
+  // the link for dead, tries to reopen it as a serial port and throws on every poll: the link
+  // must count that as a stall, drop the driver and connect a new one.
+  EmulatorOptions opt;
+  opt.faults.pause_after_scans = 20;
+  opt.faults.pause_ms = 1500;
+  ScipEmulator emu(utmSource(), opt);
+  const mrpt::config::CConfigFileMemory cfg("[LASER_2D]\ndriver = CHokuyoURG\nsensorLabel = HOKUYO_UTM\n"
+                                            "IP_DIR = 127.0.0.1\nPORT_DIR = " + std::to_string(emu.port()) + "\n");
+  io::HokuyoLinkOptions lo;
+  lo.stall_timeout = milliseconds(2000);  // the default: longer than the driver's own 1.1 s
+  std::vector<std::string> log;
+  io::HokuyoLink link(cfg, "LASER_2D", lo, [&](const std::string& m) { log.push_back(m); });
+  size_t scans = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+  while (scans < 60 && std::chrono::steady_clock::now() < deadline)
+    if (link.poll()) scans++;
+  std::string said;
+  for (const auto& m : log) said += m + "\n";
+  EXPECT_EQ(scans, 60u) << said;
+  EXPECT_GE(link.stats().stalls, 1u) << said;
+  EXPECT_GE(emu.stats().connections, 2u) << said;
+}
+
 }  // namespace swslam::scip
