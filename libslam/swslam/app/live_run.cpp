@@ -74,14 +74,15 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     // (whose other sections, e.g. [global], are rawlog-grabber's and not read here).
     params = sensor_file ? system::loadSystemParams(*cfg) : system::loadSystemParams(*cfg, {opts.sensor_section});
     const mrpt::config::CConfigFileBase& sensor_cfg = sensor_file ? *sensor_file : *cfg;
-    // The folder before the sensor: a folder that cannot be written fails at once. The
-    // recording replaces a previous one from the start, so do the other outputs.
+    // The folder before the sensor: a folder that cannot be written fails at once.
     folder.emplace(opts.output);
-    folder->clearPreviousRun(runOutputFiles());
     io::HokuyoLinkOptions lo;
     lo.stall_timeout = milliseconds(static_cast<long>(1000 * opts.stall_timeout));
     link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
                                         [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
+    // The recording replaces a previous one from here on, so do the other outputs; a run that
+    // failed before (a bad sensor section) leaves them as they were.
+    folder->clearPreviousRun(runOutputFiles());
     recorder = std::make_unique<io::RawlogRecorder>(
         opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
   }

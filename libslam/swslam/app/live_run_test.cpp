@@ -202,3 +202,17 @@ TEST(LiveRun, BadTimingOptionsAreErrorsBeforeAnyConnection)
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(LiveRun, ABadSensorSectionLeavesThePreviousRunsOutputs)
+{
+  const std::string dir = test::tempDir("live_bad_sensor");
+  LiveRunOptions o = liveOptions(dir, 1, 1);
+  std::ofstream(o.sensor_config) << "[LASER_2D]\ndriver = CSickLaserUSB\n";  // not a Hokuyo
+  std::filesystem::create_directories(o.output);
+  std::ofstream(o.output + "/summary.md") << "a previous run\n";
+  std::ostringstream out, err;
+  EXPECT_EQ(runLive(o, out, err), kExitUsage);
+  EXPECT_NE(err.str().find("CSickLaserUSB"), std::string::npos) << err.str();
+  EXPECT_TRUE(std::filesystem::exists(o.output + "/summary.md")) << "the previous outputs were removed";
+  std::filesystem::remove_all(dir);
+}
