@@ -24,7 +24,8 @@ int main(int argc, char** argv)
                                        false, "", "A", cmd);
     TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
     TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
-    std::vector<std::string> schedules{"fixed", "gnc"};
+    std::vector<std::string> schedules{swslam::graph::kernelScheduleName(swslam::graph::KernelSchedule::Fixed),
+                                       swslam::graph::kernelScheduleName(swslam::graph::KernelSchedule::Gnc)};
     TCLAP::ValuesConstraint<std::string> schedule_names(schedules);
     TCLAP::ValueArg<std::string> kernel("", "kernel", "fixed: the kernel from the start; gnc: graduated "
                                         "non-convexity down to it ([graph_optimizer] kernel_schedule)",
@@ -45,9 +46,7 @@ int main(int argc, char** argv)
     }
     if (c.isSet()) params.kernel_c = c.getValue();
     if (iters.isSet()) params.max_iterations = iters.getValue();
-    if (kernel.isSet())
-      params.kernel_schedule = kernel.getValue() == "gnc" ? swslam::graph::KernelSchedule::Gnc
-                                                         : swslam::graph::KernelSchedule::Fixed;
+    if (kernel.isSet()) params.kernel_schedule = *swslam::graph::kernelScheduleFromName(kernel.getValue());
     params.check();
 
     swslam::graph::GraphLoadReport load;

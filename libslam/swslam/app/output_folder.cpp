@@ -1,10 +1,11 @@
 #include <swslam/app/output_folder.h>
 
+#include <swslam/common/atomic_file.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <stdexcept>
 #include <system_error>
 
@@ -15,12 +16,6 @@
 namespace swslam::app
 {
 namespace fs = std::filesystem;
-
-bool isAtomicTemporary(const std::string& file_name)
-{
-  static const std::regex pattern(R"(^\..+\.tmp[0-9]+(\.[^.]+)*$)");
-  return std::regex_match(file_name, pattern);
-}
 
 OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
 {
@@ -47,7 +42,7 @@ OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
   if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size()))
     fail(std::string("cannot be written: ") + std::strerror(errno));
   for (const auto& entry : fs::directory_iterator(dir, ec))
-    if (entry.is_regular_file() && isAtomicTemporary(entry.path().filename().string()) && fs::remove(entry.path(), ec))
+    if (entry.is_regular_file() && common::isAtomicTemporary(entry.path().filename().string()) && fs::remove(entry.path(), ec))
       stale_removed_++;
 }
 

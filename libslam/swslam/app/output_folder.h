@@ -36,7 +36,4 @@ class OutputFolder
   size_t stale_removed_ = 0;
 };
 
-/** True for the name of a temporary file of common::writeAtomically (".NAME.tmpPID.EXT"). */
-bool isAtomicTemporary(const std::string& file_name);
-
 }  // namespace swslam::app

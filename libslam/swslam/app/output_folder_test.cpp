@@ -2,8 +2,6 @@
 // the previous run's outputs removed once, just before this run writes.
 #include <swslam/app/output_folder.h>
 
-#include <swslam/common/atomic_file.h>
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -32,20 +30,6 @@ std::string errorOf(const std::string& dir)
   return "";
 }
 }  // namespace
-
-TEST(OutputFolder, TheTemporaryNamesOfAtomicWritesAreRecognized)
-{
-  const std::string dir = test::tempDir("output_folder_names");
-  std::string seen;
-  common::writeAtomically(dir + "/map.gridmap.gz", [&](const std::string& tmp) {
-    seen = fs::path(tmp).filename().string();
-    touch(tmp);
-  });
-  EXPECT_TRUE(isAtomicTemporary(seen)) << seen;
-  EXPECT_TRUE(isAtomicTemporary(".trajectory.tmp4242.tum"));
-  for (const char* name : {"trajectory.tum", ".swslam.lock", "notes.tmp.txt", ".tmp12", "map.tmp3.png"})
-    EXPECT_FALSE(isAtomicTemporary(name)) << name;
-}
 
 TEST(OutputFolder, OneRunAtATime)
 {

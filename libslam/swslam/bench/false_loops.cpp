@@ -1,10 +1,8 @@
 #include <swslam/bench/false_loops.h>
 
-#include <swslam/graph/robust_kernel.h>
 #include <swslam/graph/sliding_window.h>
 #include <swslam/graph/synthetic.h>
 
-#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -12,17 +10,6 @@ namespace swslam::bench
 {
 namespace
 {
-double rmseBetween(const graph::PoseGraph& a, const graph::PoseGraph& b)
-{
-  double sum = 0;
-  for (const auto id : a.nodeIds())
-  {
-    const auto d = a.pose(id) - b.pose(id);
-    sum += d.x() * d.x() + d.y() * d.y();
-  }
-  return std::sqrt(sum / static_cast<double>(a.nodeCount()));
-}
-
 RobustMethod oursWith(const std::string& name, const graph::GraphOptimizerParams& params)
 {
   return {name, [params, name](const graph::PoseGraph& g, std::vector<size_t>& off) {
@@ -41,11 +28,8 @@ RobustMethod oursWith(const std::string& name, const graph::GraphOptimizerParams
 std::vector<size_t> switchedOffEdges(const graph::PoseGraph& graph, const graph::GraphOptimizerParams& params)
 {
   const graph::GraphSubproblem sub = graph::fullSubproblem(graph, params);
-  const std::vector<double> r = graph::robustResiduals(sub.problem);
-  std::vector<size_t> off;
-  for (size_t n = 0; n < r.size(); ++n)
-    if (sub.problem.edges[n].robust && graph::normalizedBarronWeight(r[n], params.kernel()) < params.switched_off_weight)
-      off.push_back(sub.edge_indices[n]);
+  std::vector<size_t> off = graph::switchedOffEdges(sub.problem, params);
+  for (size_t& k : off) k = sub.edge_indices[k];
   return off;
 }
 
@@ -67,6 +51,7 @@ std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::
   graph::GraphOptimizerParams l2;
   l2.kernel_alpha = 2;
   graph::optimizeFull(optimum, l2);
+  const std::vector<geometry::Pose2> clean_poses = graph::truthFromGraph(optimum);
   std::vector<FalseLoopCase> out;
   for (const size_t n : counts)
     for (const bool grouped : {false, true})
@@ -84,7 +69,7 @@ std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::
         std::vector<size_t> off;
         const SolverRun r = m.run(g, off);
         FalseLoopCase c{name, m.name, n, grouped};
-        c.rmse_to_clean = rmseBetween(r.result, optimum);
+        c.rmse_to_clean = graph::compareToTruth(r.result, clean_poses).rmse_xy;
         size_t hits = 0;
         for (const size_t k : off) hits += truth.count(k);
         c.switched_off = off.size();

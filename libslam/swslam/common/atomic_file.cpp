@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
 #include <system_error>
 #include <unistd.h>
@@ -10,14 +11,30 @@ namespace swslam::common
 {
 namespace fs = std::filesystem;
 
-void writeAtomically(const std::string& path,
-                     const std::function<void(const std::string& tmp_path)>& writer)
+namespace
+{
+/** Where writeAtomically() writes `path` before renaming it, in the same folder. */
+std::string atomicTemporaryPath(const std::string& path)
 {
   const fs::path final_path(path);
   // Keep the final extension last: some writers (MRPT, image codecs) pick the format from it.
   const std::string tmp_name = "." + final_path.stem().string() + ".tmp" +
                                std::to_string(::getpid()) + final_path.extension().string();
-  const fs::path tmp = final_path.parent_path() / tmp_name;
+  return (final_path.parent_path() / tmp_name).string();
+}
+}  // namespace
+
+bool isAtomicTemporary(const std::string& file_name)
+{
+  static const std::regex pattern(R"(^\..+\.tmp[0-9]+(\.[^.]+)*$)");
+  return std::regex_match(file_name, pattern);
+}
+
+void writeAtomically(const std::string& path,
+                     const std::function<void(const std::string& tmp_path)>& writer)
+{
+  const fs::path final_path(path);
+  const fs::path tmp = atomicTemporaryPath(path);
   try
   {
     writer(tmp.string());

@@ -13,6 +13,10 @@ namespace swslam::common
 void writeAtomically(const std::string& path,
                      const std::function<void(const std::string& tmp_path)>& writer);
 
+/** True for the name writeAtomically() gives a file before renaming it (".NAME.tmpPID.EXT"):
+ * one a process killed while writing left behind. */
+bool isAtomicTemporary(const std::string& file_name);
+
 /** Writes `content` to `path` atomically. */
 void writeTextAtomically(const std::string& path, const std::string& content);
 

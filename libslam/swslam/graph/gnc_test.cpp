@@ -32,15 +32,10 @@ PoseGraph cleanOptimum(const SyntheticGraph& s)
   return g;
 }
 
-double distance(const PoseGraph& a, const PoseGraph& b)
+/** rmse of the node positions of `g` against those of `reference`. */
+double distance(const PoseGraph& g, const PoseGraph& reference)
 {
-  double sum = 0;
-  for (const auto id : a.nodeIds())
-  {
-    const auto d = a.pose(id) - b.pose(id);
-    sum += d.x() * d.x() + d.y() * d.y();
-  }
-  return std::sqrt(sum / a.nodeCount());
+  return compareToTruth(g, truthFromGraph(reference)).rmse_xy;
 }
 
 GraphOptimizerParams gnc()

@@ -234,6 +234,16 @@ std::vector<double> robustResiduals(const GraphProblem& problem)
   return r;
 }
 
+std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  const std::vector<double> r = robustResiduals(problem);
+  std::vector<size_t> off;
+  for (size_t n = 0; n < problem.edges.size(); ++n)
+    if (problem.edges[n].robust && normalizedBarronWeight(r[n], params.kernel()) < params.switched_off_weight)
+      off.push_back(n);
+  return off;
+}
+
 namespace
 {
 /** The optimization with the kernel as params give it (KernelSchedule::Fixed). */
@@ -332,10 +342,14 @@ OptimizationReport optimizeGnc(GraphProblem& problem, const GraphOptimizerParams
   // their noise is not down-weighted (with no outlier this is the least-squares optimum).
   GraphProblem inliers = problem;
   inliers.edges.clear();
-  const std::vector<double> r_end = robustResiduals(problem);
-  for (size_t n = 0; n < problem.edges.size(); ++n)
-    if (!problem.edges[n].robust || normalizedBarronWeight(r_end[n], params.kernel()) >= params.switched_off_weight)
+  const std::vector<size_t> off = switchedOffEdges(problem, params);
+  for (size_t n = 0, k = 0; n < problem.edges.size(); ++n)
+  {
+    if (k < off.size() && off[k] == n)
+      ++k;
+    else
       inliers.edges.push_back(problem.edges[n]);
+  }
   GraphOptimizerParams l2 = stage;
   l2.kernel_alpha = 2;
   l2.max_iterations = params.max_iterations;
@@ -359,13 +373,7 @@ OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimi
   OptimizationReport rep = params.kernel_schedule == KernelSchedule::Gnc ? optimizeGnc(problem, params)
                                                                           : optimizeWithKernel(problem, params);
   // Which robustified edges the kernel has switched off at the result.
-  if (rep.status != OptimizationStatus::NothingToOptimize)
-  {
-    const std::vector<double> r = robustResiduals(problem);
-    for (size_t n = 0; n < problem.edges.size(); ++n)
-      if (problem.edges[n].robust && normalizedBarronWeight(r[n], params.kernel()) < params.switched_off_weight)
-        rep.switched_off.push_back(n);
-  }
+  if (rep.status != OptimizationStatus::NothingToOptimize) rep.switched_off = switchedOffEdges(problem, params);
   return rep;
 }
 

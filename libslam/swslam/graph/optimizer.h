@@ -62,6 +62,10 @@ void checkProblem(const GraphProblem& problem);
 /** sqrt(e^T Omega e) of each robustified edge at the problem's poses (0 for the others). */
 std::vector<double> robustResiduals(const GraphProblem& problem);
 
+/** The robustified edges (indices into problem.edges, increasing) whose weight under params'
+ * kernel is below params.switched_off_weight at the problem's poses. */
+std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const GraphOptimizerParams& params);
+
 /** Optimizes problem.poses in place, with the kernel schedule of params (fixed, or graduated
  * non-convexity), and reports the robustified edges the kernel switched off. On Diverged the
  * poses are left exactly as given. */

@@ -54,18 +54,22 @@ void GraphOptimizerParams::check() const
 
 const char* kernelScheduleName(KernelSchedule s) { return s == KernelSchedule::Gnc ? "gnc" : "fixed"; }
 
+std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name)
+{
+  for (const KernelSchedule s : {KernelSchedule::Fixed, KernelSchedule::Gnc})
+    if (name == kernelScheduleName(s)) return s;
+  return std::nullopt;
+}
+
 void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                               const std::string& s)
 {
   MRPT_LOAD_CONFIG_VAR(kernel_alpha, double, c, s);
   MRPT_LOAD_CONFIG_VAR(kernel_c, double, c, s);
   const std::string schedule = c.read_string(s, "kernel_schedule", kernelScheduleName(kernel_schedule));
-  if (schedule == "fixed")
-    kernel_schedule = KernelSchedule::Fixed;
-  else if (schedule == "gnc")
-    kernel_schedule = KernelSchedule::Gnc;
-  else
-    throw std::invalid_argument("graph_optimizer: kernel_schedule '" + schedule + "' is not fixed or gnc");
+  const auto parsed = kernelScheduleFromName(schedule);
+  if (!parsed) throw std::invalid_argument("graph_optimizer: kernel_schedule '" + schedule + "' is not fixed or gnc");
+  kernel_schedule = *parsed;
   MRPT_LOAD_CONFIG_VAR(gnc_factor, double, c, s);
   gnc_stage_iterations = c.read_uint64_t(s, "gnc_stage_iterations", gnc_stage_iterations);
   MRPT_LOAD_CONFIG_VAR(switched_off_weight, double, c, s);

@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
+#include <string>
 
 namespace swslam::graph
 {
@@ -21,6 +23,8 @@ enum class KernelSchedule
   Gnc
 };
 const char* kernelScheduleName(KernelSchedule s);
+/** "fixed" or "gnc"; nothing for another name. */
+std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name);
 
 struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
 {

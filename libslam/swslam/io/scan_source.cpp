@@ -82,7 +82,6 @@ class SourceBase : public ScanSource
       if (label_.empty()) label_ = scan->sensorLabel;
       if (scan->sensorLabel != label_)
       {
-        stats_.other_sensors++;
         stats_.other_labels[scan->sensorLabel]++;
         return false;
       }
@@ -158,6 +157,13 @@ class CarmenSource : public SourceBase
 };
 
 }  // namespace
+
+size_t ScanSourceStats::otherSensors() const
+{
+  size_t n = 0;
+  for (const auto& [label, count] : other_labels) n += count;
+  return n;
+}
 
 std::string noScanReason(const ScanSourceStats& stats, const std::string& sensor_label)
 {

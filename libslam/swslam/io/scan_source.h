@@ -27,10 +27,12 @@ struct ScanSourceOptions
 struct ScanSourceStats
 {
   size_t scans = 0;              ///< scans returned
-  size_t other_sensors = 0;      ///< scans of another sensor label, skipped
-  std::map<std::string, size_t> other_labels;  ///< those scans, by sensor label
+  std::map<std::string, size_t> other_labels;  ///< scans of another sensor label, skipped, by label
   size_t other_observations = 0; ///< observations that are neither scans nor odometry
   size_t odometry = 0;           ///< odometry readings/actions used
+
+  /** Scans of other sensors, skipped. */
+  size_t otherSensors() const;
 };
 
 class ScanSource

@@ -155,11 +155,11 @@ TEST(ScanSource, OtherSensorsAreSkippedAndCounted)
   sensor::ScanInput in;
   EXPECT_FALSE(src->next(in));
   EXPECT_EQ(src->stats().scans, 0u);
-  EXPECT_GT(src->stats().other_sensors, 2000u);
+  EXPECT_GT(src->stats().otherSensors(), 2000u);
   // By label, and named when nothing of the asked sensor was found.
   ASSERT_EQ(src->stats().other_labels.size(), 1u);
   const auto& [label, count] = *src->stats().other_labels.begin();
-  EXPECT_EQ(count, src->stats().other_sensors);
+  EXPECT_EQ(count, src->stats().otherSensors());
   const std::string why = noScanReason(src->stats(), "NO_SUCH_LASER");
   EXPECT_NE(why.find("no scan of sensor 'NO_SUCH_LASER'"), std::string::npos) << why;
   EXPECT_NE(why.find("'" + label + "' (" + std::to_string(count) + " scans)"), std::string::npos) << why;
