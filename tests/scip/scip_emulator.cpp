@@ -29,6 +29,27 @@ std::runtime_error systemError(const std::string& what)
 {
   return std::runtime_error("SCIP emulator: " + what + ": " + std::strerror(errno));
 }
+
+/** Faults::pause_after_scans: once over the emulator's life, the link goes silent. */
+class LinkPause
+{
+ public:
+  /** True while the link is silent: from when a connection got `after` scans (0: never), for
+   * `ms` milliseconds. */
+  bool silent(uint64_t after, unsigned ms, uint64_t scans, Clock::time_point now)
+  {
+    if (after && scans >= after && !started_)
+    {
+      started_ = true;
+      end_ = now + std::chrono::milliseconds(ms);
+    }
+    return started_ && now < end_;
+  }
+
+ private:
+  bool started_ = false;
+  Clock::time_point end_;
+};
 }  // namespace
 
 struct ScipEmulator::Connection
@@ -219,8 +240,7 @@ void ScipEmulator::run()
   };
   uint64_t next_k = 1;  // the first scan period not yet due
   Connection c;
-  bool paused = false;  // Faults::pause_after_scans: once, over the emulator's life
-  Clock::time_point pause_end;
+  LinkPause pause;
 
   for (;;)
   {
@@ -281,13 +301,7 @@ void ScipEmulator::run()
     }
 
     const auto now = Clock::now();
-    // A paused link: nothing goes out until the pause ends (see Faults::pause_after_scans).
-    if (pause_after && c.scans >= pause_after && !paused)
-    {
-      paused = true;
-      pause_end = now + std::chrono::milliseconds(pause_ms);
-    }
-    if (paused && now < pause_end)
+    if (pause.silent(pause_after, pause_ms, c.scans, now))  // nothing goes out, scans are lost
     {
       next_k = periodOf(now) + 1;
       continue;
