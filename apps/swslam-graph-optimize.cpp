@@ -55,12 +55,16 @@ int main(int argc, char** argv)
                 load.skipped_lines);
     for (size_t k = 0; k < load.skipped_lines; ++k)
       std::printf("  skipped line %zu: %s\n", load.skipped_line_numbers[k], load.skip_reasons[k].c_str());
+    if (load.edges == 0) throw std::runtime_error(in.getValue() + ": the graph has no edges: nothing to optimize");
 
     const swslam::graph::OptimizationReport r = swslam::graph::optimizeFull(graph, params);
     std::printf("status: %s (%s)\niterations: %zu\ninitial chi2: %.9g\nfinal chi2: %.9g\n"
                 "active squared residuals: %.9g\ntime: %.3f ms\n",
                 swslam::graph::statusName(r.status), r.message.c_str(), r.iterations, r.initial_chi2,
                 r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
+    if (r.components > 1)
+      std::printf("warning: the graph falls apart into %zu connected components; each one without a FIX "
+                  "node is held at its first node\n", r.components);
     // The edges the kernel distrusts.
     std::printf("switched off: %zu edges (weight below %g)\n", r.switched_off.size(), params.switched_off_weight);
     for (const size_t k : r.switched_off)

@@ -61,3 +61,23 @@ paste <(grep '^VERTEX_SE2' "$DIR/clean.g2o") <(grep '^VERTEX_SE2' "$DIR/false.g2
   fail "gnc result is not the clean optimum"
 "$BIN" -i "$IN" -o "$DIR/x.g2o" --kernel nonsense > /dev/null 2>&1 && fail "unknown --kernel accepted"
 echo "graph_optimize_app_test: OK"
+
+# Bad graphs: each a named error and no output, or (pieces) a warning and each piece held.
+printf 'VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\n' > "$DIR/noedge.g2o"
+bad_graph() {  # FILE EXPECTED_MESSAGE
+  if "$BIN" -i "$1" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "$1 accepted"; fi
+  grep -q "$2" "$DIR/err.txt" || fail "$1: message '$(cat "$DIR/err.txt")'"
+  [ ! -e "$DIR/bad.g2o" ] || fail "$1: output written"
+}
+bad_graph "$DIR/noedge.g2o" "the graph has no edges: nothing to optimize"
+{ cat "$DIR/noedge.g2o"; echo "EDGE_SE2 0 1 1 0 0 100 0 0 -100 0 1000"; } > "$DIR/nonpd.g2o"
+bad_graph "$DIR/nonpd.g2o" "nonpd.g2o:3: edge 0 -> 1: information matrix is not positive definite"
+{ cat "$DIR/noedge.g2o"; echo "EDGE_SE2 0 1 nan 0 0 100 0 0 100 0 1000"; } > "$DIR/nan.g2o"
+bad_graph "$DIR/nan.g2o" "nan.g2o:3: edge 0 -> 1: measurement is not finite"
+{ cat "$DIR/noedge.g2o"; echo "VERTEX_SE2 2 2 0 0"; echo "VERTEX_SE2 3 3 0 0";
+  echo "EDGE_SE2 0 1 1 0 0 100 0 0 100 0 1000"; echo "EDGE_SE2 2 3 1.5 0 0 100 0 0 100 0 1000"; } > "$DIR/pieces.g2o"
+"$BIN" -i "$DIR/pieces.g2o" -o "$DIR/pieces.out.g2o" > "$DIR/pieces.txt" || fail "two pieces rejected"
+grep -q "falls apart into 2 connected components" "$DIR/pieces.txt" || fail "pieces not reported: $(cat "$DIR/pieces.txt")"
+grep -q '^VERTEX_SE2 2 2 0 0$' "$DIR/pieces.out.g2o" || fail "the second piece's first node moved"
+grep -q '^VERTEX_SE2 3 3.5 0 0$' "$DIR/pieces.out.g2o" || fail "the second piece was not optimized: $(grep 'VERTEX_SE2 3' "$DIR/pieces.out.g2o")"
+echo "graph_optimize_app_test: bad graphs OK"

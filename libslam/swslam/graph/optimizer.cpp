@@ -108,14 +108,44 @@ void applyStep(const std::vector<int>& var, const Eigen::VectorXd& dx, std::vect
   }
 }
 
-/** Variable index per pose (-1: held fixed). Without any fixed pose, pose 0 is the gauge. */
-std::vector<int> variableIndex(const GraphProblem& p)
+/** Per pose, the lowest pose index of its connected component (edges joining poses). */
+std::vector<int> componentRoots(const GraphProblem& p)
 {
-  const bool any_fixed = std::any_of(p.fixed.begin(), p.fixed.end(), [](char f) { return f != 0; });
+  std::vector<int> parent(p.poses.size());
+  for (size_t n = 0; n < parent.size(); ++n) parent[n] = static_cast<int>(n);
+  auto root = [&](int n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  for (const auto& e : p.edges)
+  {
+    const int a = root(e.i), b = root(e.j);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the lower index stays the root
+  }
+  std::vector<int> roots(parent.size());
+  for (size_t n = 0; n < roots.size(); ++n) roots[n] = root(static_cast<int>(n));
+  return roots;
+}
+
+/** Variable index per pose (-1: held fixed). A connected component with no fixed pose is
+ * held at its first pose (its gauge): otherwise nothing would tie it down. */
+std::vector<int> variableIndex(const GraphProblem& p, size_t& components)
+{
+  const std::vector<int> roots = componentRoots(p);
+  std::vector<char> held(p.poses.size(), 0);  // per component root: it has a fixed pose
+  components = 0;
+  for (size_t n = 0; n < roots.size(); ++n)
+  {
+    components += roots[n] == static_cast<int>(n);
+    if (p.fixed[n]) held[roots[n]] = 1;
+  }
   std::vector<int> var(p.poses.size(), -1);
   int free_count = 0;
   for (size_t n = 0; n < var.size(); ++n)
-    if (!(p.fixed[n] || (!any_fixed && n == 0))) var[n] = free_count++;
+  {
+    const bool gauge = roots[n] == static_cast<int>(n) && !held[n];
+    if (!(p.fixed[n] || gauge)) var[n] = free_count++;
+  }
   return var;
 }
 
@@ -254,7 +284,7 @@ OptimizationReport optimizeWithKernel(GraphProblem& problem, const GraphOptimize
   checkProblem(problem);
   OptimizationReport rep;
   rep.edges = problem.edges.size();
-  const std::vector<int> var = variableIndex(problem);
+  const std::vector<int> var = variableIndex(problem, rep.components);
   rep.free_nodes = std::count_if(var.begin(), var.end(), [](int v) { return v >= 0; });
   rep.fixed_nodes = problem.poses.size() - rep.free_nodes;
 

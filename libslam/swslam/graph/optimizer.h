@@ -22,7 +22,7 @@ struct GraphProblem
     bool robust = false;           ///< weighted by the Barron kernel
   };
   std::vector<geometry::Pose2> poses;
-  std::vector<char> fixed;  ///< per pose; if none is fixed, pose 0 is held as the gauge
+  std::vector<char> fixed;  ///< per pose; a connected component with none fixed is held at its first pose
   std::vector<Edge> edges;
 };
 
@@ -47,6 +47,9 @@ struct OptimizationReport
   double active_sq_residuals = 0;  ///< sum of w r^2 at the result (eq. 11; paper Fig. 7)
   double time_s = 0;
   size_t free_nodes = 0, fixed_nodes = 0, edges = 0;
+  /** Connected components of the poses; each one without a fixed pose is held at its first
+   * pose (a graph that falls apart into pieces has nothing to tie them together). */
+  size_t components = 0;
   size_t stages = 1;            ///< graduated non-convexity: kernel scales optimized in turn
   std::vector<size_t> switched_off;  ///< robustified edges whose final weight is below switched_off_weight
   std::string message;          ///< why it stopped, in words

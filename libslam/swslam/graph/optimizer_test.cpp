@@ -62,6 +62,34 @@ TEST(GraphOptimizer, WithoutFixedPoseTheFirstIsTheGauge)
   EXPECT_EQ(p.poses[0], swslam::geometry::Pose2(0, 0, 0));
 }
 
+TEST(GraphOptimizer, EachConnectedComponentIsHeldAtItsFirstPose)
+{
+  // Two square loops that share no edge, and a pose joined to nothing: the second loop has no
+  // fixed pose, so its first pose is its gauge; the lone pose stays where it is.
+  GraphProblem p = squareLoop(false);
+  const GraphProblem second = squareLoop(false);
+  for (const Pose2& pose : second.poses) p.poses.push_back(pose + Pose2(10, 0, 0));
+  p.poses.push_back(Pose2(-5, -5, 1));
+  p.fixed.resize(p.poses.size(), 0);
+  for (GraphProblem::Edge e : second.edges)
+  {
+    e.i += 4, e.j += 4;
+    p.edges.push_back(e);
+  }
+  const std::vector<Pose2> before = p.poses;
+  const auto rep = swslam::graph::optimizeGraphProblem(p, swslam::graph::GraphOptimizerParams{});
+  EXPECT_EQ(rep.status, OptimizationStatus::Converged) << rep.message;
+  EXPECT_EQ(rep.components, 3u);
+  EXPECT_EQ(rep.fixed_nodes, 3u);
+  EXPECT_EQ(p.poses[0], before[0]);
+  EXPECT_EQ(p.poses[4], before[4]);
+  EXPECT_EQ(p.poses[8], before[8]);
+  EXPECT_LT(rep.final_chi2, 1e-12);
+  // The second loop is solved relative to its own gauge: its third pose is (2, 2, pi) from it.
+  const Pose2 rel = swslam::geometry::relativePose(p.poses[4], p.poses[6]);
+  EXPECT_LT((rel - Pose2(2, 2, M_PI)).head<2>().norm(), 1e-6);
+}
+
 TEST(GraphOptimizer, NonFinitePoseIsReportedAndLeavesTheEstimateIntact)
 {
   GraphProblem p = squareLoop(false);
