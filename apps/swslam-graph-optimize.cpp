@@ -6,6 +6,7 @@
 #include <swslam/system/config.h>
 
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -24,11 +25,14 @@ int main(int argc, char** argv)
                                        false, "", "A", cmd);
     TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
     TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
-    std::vector<std::string> schedules{swslam::graph::kernelScheduleName(swslam::graph::KernelSchedule::Fixed),
-                                       swslam::graph::kernelScheduleName(swslam::graph::KernelSchedule::Gnc)};
+    using swslam::graph::KernelSchedule;
+    std::vector<std::string> schedules;
+    for (const auto s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive})
+      schedules.push_back(swslam::graph::kernelScheduleName(s));
     TCLAP::ValuesConstraint<std::string> schedule_names(schedules);
     TCLAP::ValueArg<std::string> kernel("", "kernel", "fixed: the kernel from the start; gnc: graduated "
-                                        "non-convexity down to it ([graph_optimizer] kernel_schedule)",
+                                        "non-convexity down to it; adaptive: shape and scale per edge kind "
+                                        "from the residuals ([graph_optimizer] kernel_schedule)",
                                         false, "", &schedule_names, cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
@@ -65,6 +69,14 @@ int main(int argc, char** argv)
     if (r.components > 1)
       std::printf("warning: the graph falls apart into %zu connected components; each one without a FIX "
                   "node is held at its first node\n", r.components);
+    std::array<size_t, swslam::graph::kEdgeKindCount> robust_edges{};
+    for (size_t k = 0; k < graph.edgeCount(); ++k)
+      if (params.isRobust(graph.edge(k).kind)) ++robust_edges[static_cast<int>(graph.edge(k).kind)];
+    if (params.kernel_schedule == KernelSchedule::Adaptive)
+      for (int kind = 0; kind < swslam::graph::kEdgeKindCount; ++kind)
+        if (robust_edges[kind] > 0)
+          std::printf("kernel %s: alpha %.2f, c %.4g\n", swslam::graph::edgeKindName(static_cast<swslam::graph::EdgeKind>(kind)),
+                      r.kernels[kind].alpha, r.kernels[kind].c);
     // The edges the kernel distrusts.
     std::printf("switched off: %zu edges (weight below %g)\n", r.switched_off.size(), params.switched_off_weight);
     for (const size_t k : r.switched_off)

@@ -36,9 +36,12 @@ struct FalseLoopCase
   size_t false_loops = 0;
   bool grouped = false;
   double rmse_to_clean = 0;   ///< [m] node positions against the outlier-free optimum
+  /** chi2 of the true edges at the result, relative to the optimum's, minus 1 (0: as good). */
+  double clean_chi2_excess = 0;
   double precision = 1, recall = 1;  ///< of the switched-off edges against the false loops
   size_t switched_off = 0;
   double time_s = 0;
+  size_t iterations = 0;  ///< the method's linear solves (Ceres: its iterations)
 };
 
 /** The outlier-free optimum of `clean` (least squares from its guess), then every count of

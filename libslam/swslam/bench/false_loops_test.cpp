@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace swslam;
 using namespace swslam::bench;
 
@@ -19,7 +21,7 @@ TEST(FalseLoops, EachMethodIsScoredAgainstTheOutlierFreeOptimum)
   o.seed = 4;
   const auto s = graph::makeGridWalkGraph(o);
   const auto cases = falseLoopCases("grid-200", s.graph, {0, 20}, ourRobustMethods(graph::GraphOptimizerParams()));
-  ASSERT_EQ(cases.size(), 3u * 3u);  // 0 loops; 20 random; 20 grouped: three methods each
+  ASSERT_EQ(cases.size(), 3u * 4u);  // 0 loops; 20 random; 20 grouped: four methods each
   for (const FalseLoopCase& c : cases)
   {
     EXPECT_EQ(formatCase(c).rfind("grid-200", 0), 0u);
@@ -29,12 +31,13 @@ TEST(FalseLoops, EachMethodIsScoredAgainstTheOutlierFreeOptimum)
       if (c.false_loops == 0) EXPECT_LT(c.rmse_to_clean, 1e-6);
       if (c.false_loops > 0) EXPECT_GT(c.rmse_to_clean, 0.2) << formatCase(c);
     }
-    if (c.method == "gnc")
+    if (c.method == "gnc" || c.method == "adaptive")
     {
       EXPECT_LT(c.rmse_to_clean, 0.01) << formatCase(c);
       EXPECT_EQ(c.switched_off, c.false_loops) << formatCase(c);
       EXPECT_EQ(c.precision, 1.0) << formatCase(c);
       EXPECT_EQ(c.recall, 1.0) << formatCase(c);
+      EXPECT_LT(std::abs(c.clean_chi2_excess), 1e-6) << formatCase(c);
     }
   }
 }

@@ -11,7 +11,7 @@ const char* edgeKindName(EdgeKind kind) { return kKindNames[static_cast<int>(kin
 
 std::optional<EdgeKind> edgeKindFromName(const std::string& name)
 {
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < kEdgeKindCount; ++k)
     if (name == kKindNames[k]) return static_cast<EdgeKind>(k);
   return std::nullopt;
 }

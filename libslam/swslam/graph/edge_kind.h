@@ -14,6 +14,9 @@ enum class EdgeKind
   OdometryPrior    ///< wheel odometry or another prior between nodes
 };
 
+/** The number of kinds (EdgeKind values are 0 .. kEdgeKindCount - 1). */
+constexpr int kEdgeKindCount = 4;
+
 /** "consecutive", "dense_neighbour", "loop", "odometry_prior". */
 const char* edgeKindName(EdgeKind kind);
 std::optional<EdgeKind> edgeKindFromName(const std::string& name);

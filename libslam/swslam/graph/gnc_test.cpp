@@ -1,6 +1,7 @@
-// Graduated non-convexity against false loop closures, from the odometry guess: the kernel
-// switches the false loops off and keeps every true edge, and the result is the optimum of
-// the graph without them (with no false loop, the least-squares optimum).
+// Graduated non-convexity and the adaptive kernel against false loop closures, from the
+// odometry guess: the kernel switches the false loops off and keeps every true edge, and the
+// result is the optimum of the graph without them (with no false loop, the least-squares
+// optimum).
 #include <swslam/graph/optimizer.h>
 #include <swslam/graph/sliding_window.h>
 #include <swslam/graph/synthetic.h>
@@ -45,19 +46,47 @@ GraphOptimizerParams gnc()
   p.kernel_schedule = KernelSchedule::Gnc;
   return p;
 }
+
+/** Every edge robustified, the shape and scale of each kind estimated from its residuals. */
+GraphOptimizerParams adaptive()
+{
+  GraphOptimizerParams p;
+  p.kernel_schedule = KernelSchedule::Adaptive;
+  return p;
+}
 }  // namespace
 
 TEST(Gnc, WithoutOutliersItReachesLeastSquares)
 {
   const SyntheticGraph s = cleanGraph();
+  for (const GraphOptimizerParams& params : {gnc(), adaptive()})
+  {
+  SCOPED_TRACE(kernelScheduleName(params.kernel_schedule));
   PoseGraph g = s.graph;
-  const OptimizationReport r = optimizeFull(g, gnc());
+  const OptimizationReport r = optimizeFull(g, params);
   ASSERT_NE(r.status, OptimizationStatus::Diverged) << r.message;
   EXPECT_GT(r.stages, 1u);
   const PoseGraph l2 = cleanOptimum(s);
   const double chi2_l2 = graphChi2(fullSubproblem(l2, {}).problem);
   EXPECT_NEAR(r.final_chi2, chi2_l2, 1e-3 * chi2_l2);
   EXPECT_TRUE(r.switched_off.empty()) << r.switched_off.size() << " true edges switched off";
+  }
+}
+
+TEST(Gnc, AdaptiveShapesFollowTheResiduals)
+{
+  // The odometry chain is clean: its shape stays near least squares; the loops with false
+  // ones among them get a heavy-tailed shape.
+  const SyntheticGraph s = cleanGraph();
+  PoseGraph g = s.graph;
+  FalseLoopOptions fo;
+  fo.count = 100;
+  fo.seed = 5;
+  addFalseLoops(g, fo);
+  const OptimizationReport r = optimizeFull(g, adaptive());
+  ASSERT_NE(r.status, OptimizationStatus::Diverged) << r.message;
+  EXPECT_GT(r.kernels[static_cast<int>(EdgeKind::Consecutive)].alpha, 1.0);
+  EXPECT_LT(r.kernels[static_cast<int>(EdgeKind::Loop)].alpha, 0.5);
 }
 
 TEST(Gnc, FalseLoopsAreSwitchedOffRandomOrGrouped)
@@ -76,12 +105,17 @@ TEST(Gnc, FalseLoopsAreSwitchedOffRandomOrGrouped)
 
     PoseGraph fixed = g;  // the paper's fixed Cauchy kernel from the odometry guess
     optimizeFull(fixed, GraphOptimizerParams());
-    const OptimizationReport r = optimizeFull(g, gnc());
+    for (const GraphOptimizerParams& params : {gnc(), adaptive()})
+    {
+    SCOPED_TRACE(kernelScheduleName(params.kernel_schedule));
+    PoseGraph result = g;
+    const OptimizationReport r = optimizeFull(result, params);
     ASSERT_NE(r.status, OptimizationStatus::Diverged) << r.message;
-    EXPECT_LT(distance(g, clean), 0.05) << "grouped " << grouped;
-    EXPECT_LE(distance(g, clean), distance(fixed, clean)) << "grouped " << grouped;
+    EXPECT_LT(distance(result, clean), 0.05) << "grouped " << grouped;
+    EXPECT_LE(distance(result, clean), distance(fixed, clean)) << "grouped " << grouped;
     // The switched-off edges (graph edge indices) are exactly the false loops.
     const std::set<size_t> off(r.switched_off.begin(), r.switched_off.end()), truth(added.begin(), added.end());
     EXPECT_EQ(off, truth) << "grouped " << grouped;
+    }
   }
 }

@@ -1,11 +1,14 @@
 #include <swslam/graph/optimizer.h>
 
+#include <swslam/graph/adaptive_kernel.h>
 #include <swslam/graph/normal_equations.h>
 
 #include <mrpt/system/CTicTac.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -19,10 +22,11 @@ struct EdgeCost
   double cost, weight;
 };
 
-EdgeCost edgeCost(double r, bool robust, const BarronKernel& kernel)
+EdgeCost edgeCost(double r, const GraphProblem::Edge& e, const KindKernels& kernels)
 {
-  if (!robust) return {0.5 * r * r, 1.0};
-  return {normalizedBarronRho(r, kernel), normalizedBarronWeight(r, kernel)};
+  if (!e.robust) return {0.5 * r * r, 1.0};
+  const BarronKernel& k = kernels[static_cast<int>(e.kind)];
+  return {normalizedBarronRho(r, k), normalizedBarronWeight(r, k)};
 }
 
 struct Evaluation
@@ -48,7 +52,7 @@ std::vector<geometry::SinCos> poseRotations(const std::vector<geometry::Pose2>& 
   return r;
 }
 
-Evaluation evaluate(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const BarronKernel& k,
+Evaluation evaluate(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const KindKernels& k,
                     const std::vector<geometry::SinCos>& rz)
 {
   Evaluation ev;
@@ -58,7 +62,7 @@ Evaluation evaluate(const GraphProblem& p, const std::vector<geometry::Pose2>& x
     const auto& e = p.edges[n];
     const Eigen::Vector3d err = geometry::se2Error(x[e.i], x[e.j], e.z, rx[e.i], rz[n]);
     const double r2 = err.dot(e.information * err);
-    const EdgeCost c = edgeCost(std::sqrt(r2), e.robust, k);
+    const EdgeCost c = edgeCost(std::sqrt(r2), e, k);
     ev.cost += c.cost;
     ev.chi2 += r2;
     ev.active += c.weight * r2;
@@ -68,7 +72,7 @@ Evaluation evaluate(const GraphProblem& p, const std::vector<geometry::Pose2>& x
 
 /** Fills H and g with the IRLS-weighted Gauss-Newton terms at x (eq. 11-13). */
 void linearize(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const std::vector<int>& var,
-               const BarronKernel& k, const std::vector<geometry::SinCos>& rz, NormalEquations& ne)
+               const KindKernels& k, const std::vector<geometry::SinCos>& rz, NormalEquations& ne)
 {
   ne.setZero();
   Eigen::VectorXd& g = ne.gradient();
@@ -82,7 +86,7 @@ void linearize(const GraphProblem& p, const std::vector<geometry::Pose2>& x, con
     const Eigen::Vector3d err =
         geometry::se2ErrorWithJacobians(x[e.i], x[e.j], e.z, rx[e.i], rz[n], Ji, Jj);
     const double r = std::sqrt(err.dot(e.information * err));
-    const Eigen::Matrix3d W = edgeCost(r, e.robust, k).weight * e.information;
+    const Eigen::Matrix3d W = edgeCost(r, e, k).weight * e.information;
     const Eigen::Vector3d We = W * err;
     if (a >= 0)
     {
@@ -158,10 +162,10 @@ struct Outcome
 /** Levenberg-Marquardt with IRLS reweighting at every linearization (eq. 11-13). Updates x
  * and ev (its evaluation) on every accepted step, and the iteration counts of rep. */
 Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
-                           const GraphOptimizerParams& params, const std::vector<geometry::SinCos>& rz,
-                           std::vector<geometry::Pose2>& x, Evaluation& ev, OptimizationReport& rep)
+                           const GraphOptimizerParams& params, const KindKernels& kernel,
+                           const std::vector<geometry::SinCos>& rz, std::vector<geometry::Pose2>& x,
+                           Evaluation& ev, OptimizationReport& rep)
 {
-  const BarronKernel kernel = params.kernel();
   std::vector<std::pair<int, int>> pairs;
   for (const auto& e : p.edges)
     if (var[e.i] >= 0 && var[e.j] >= 0) pairs.emplace_back(var[e.i], var[e.j]);
@@ -230,8 +234,7 @@ const char* statusName(OptimizationStatus s)
 
 double graphChi2(const GraphProblem& problem)
 {
-  return evaluate(problem, problem.poses, BarronKernel{2.0, 1.0}, measurementRotations(problem))
-      .chi2;
+  return evaluate(problem, problem.poses, uniformKernels({2.0, 1.0}), measurementRotations(problem)).chi2;
 }
 
 void checkProblem(const GraphProblem& p)
@@ -264,20 +267,35 @@ std::vector<double> robustResiduals(const GraphProblem& problem)
   return r;
 }
 
-std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const GraphOptimizerParams& params)
+KindKernels uniformKernels(const BarronKernel& k)
+{
+  KindKernels all;
+  all.fill(k);
+  return all;
+}
+
+std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const KindKernels& kernels, double weight)
 {
   const std::vector<double> r = robustResiduals(problem);
   std::vector<size_t> off;
   for (size_t n = 0; n < problem.edges.size(); ++n)
-    if (problem.edges[n].robust && normalizedBarronWeight(r[n], params.kernel()) < params.switched_off_weight)
-      off.push_back(n);
+  {
+    const auto& e = problem.edges[n];
+    if (e.robust && normalizedBarronWeight(r[n], kernels[static_cast<int>(e.kind)]) < weight) off.push_back(n);
+  }
   return off;
+}
+
+std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  return switchedOffEdges(problem, uniformKernels(params.kernel()), params.switched_off_weight);
 }
 
 namespace
 {
-/** The optimization with the kernel as params give it (KernelSchedule::Fixed). */
-OptimizationReport optimizeWithKernel(GraphProblem& problem, const GraphOptimizerParams& params)
+/** The optimization with the given kernel per edge kind, from the problem's poses. */
+OptimizationReport optimizeWithKernels(GraphProblem& problem, const GraphOptimizerParams& params,
+                                       const KindKernels& kernels)
 {
   mrpt::system::CTicTac timer;
   params.check();
@@ -290,7 +308,8 @@ OptimizationReport optimizeWithKernel(GraphProblem& problem, const GraphOptimize
 
   std::vector<geometry::Pose2> x = problem.poses;
   const std::vector<geometry::SinCos> rz = measurementRotations(problem);
-  Evaluation ev = evaluate(problem, x, params.kernel(), rz);
+  Evaluation ev = evaluate(problem, x, kernels, rz);
+  rep.kernels = kernels;
   rep.initial_chi2 = rep.final_chi2 = ev.chi2;
   rep.initial_cost = rep.final_cost = ev.cost;
   rep.active_sq_residuals = ev.active;
@@ -300,7 +319,7 @@ OptimizationReport optimizeWithKernel(GraphProblem& problem, const GraphOptimize
   else if (rep.free_nodes == 0 || problem.edges.empty())
     out = {OptimizationStatus::NothingToOptimize, "no free pose or no edge"};
   else
-    out = levenbergMarquardt(problem, var, params, rz, x, ev, rep);
+    out = levenbergMarquardt(problem, var, params, kernels, rz, x, ev, rep);
 
   if (out.status != OptimizationStatus::Diverged && out.status != OptimizationStatus::NothingToOptimize)
   {
@@ -315,84 +334,168 @@ OptimizationReport optimizeWithKernel(GraphProblem& problem, const GraphOptimize
   return rep;
 }
 
-/** Graduated non-convexity over the kernel's scale (KernelSchedule::Gnc): stages of
- * optimizeWithKernel with c = kernel_c sqrt(mu), mu from max(1, 2 r_max^2 / kernel_c^2) down
- * to 1 by gnc_factor, each from the last one's poses. */
-OptimizationReport optimizeGnc(GraphProblem& problem, const GraphOptimizerParams& params)
+/** Per edge kind with robustified edges: the scale kernel_c times the robust scale of its
+ * residuals at the problem's poses, and the shape that fits them best, no lower than
+ * `alpha_floor` (KernelSchedule::Adaptive). `limited` tells whether the floor held a shape. */
+KindKernels estimateKernels(const GraphProblem& p, const GraphOptimizerParams& params,
+                            const ShapeEstimator& shapes, double alpha_floor, bool& limited)
 {
-  mrpt::system::CTicTac timer;
-  params.check();
-  checkProblem(problem);
-  const std::vector<geometry::Pose2> given = problem.poses;
-  const std::vector<double> r = robustResiduals(problem);
-  const double r_max = r.empty() ? 0.0 : *std::max_element(r.begin(), r.end());
-  // Not finite: the first stage reports the divergence.
-  double mu = std::isfinite(r_max) ? std::max(1.0, 2 * r_max * r_max / (params.kernel_c * params.kernel_c)) : 1.0;
-  GraphOptimizerParams stage = params;
-  stage.kernel_schedule = KernelSchedule::Fixed;
-  OptimizationReport total;
-  for (size_t k = 0;; ++k)
+  const std::vector<double> r = robustResiduals(p);
+  std::array<std::vector<double>, kEdgeKindCount> by_kind;
+  for (size_t n = 0; n < p.edges.size(); ++n)
+    if (p.edges[n].robust) by_kind[static_cast<int>(p.edges[n].kind)].push_back(r[n]);
+  KindKernels k = uniformKernels(params.kernel());
+  limited = false;
+  for (int kind = 0; kind < kEdgeKindCount; ++kind)
   {
-    stage.kernel_c = params.kernel_c * std::sqrt(mu);
-    stage.max_iterations = mu > 1 ? std::min(params.max_iterations, params.gnc_stage_iterations) : params.max_iterations;
-    const OptimizationReport s = optimizeWithKernel(problem, stage);
-    if (k == 0)
-    {
-      total = s;
-      // The first stage starts under its own, wider kernel: the initial cost is the target's.
-      total.initial_cost = evaluate(problem, given, params.kernel(), measurementRotations(problem)).cost;
-    }
-    else
-    {
-      total.iterations += s.iterations;
-      total.accepted_steps += s.accepted_steps;
-      total.final_chi2 = s.final_chi2;
-      total.final_cost = s.final_cost;
-      total.active_sq_residuals = s.active_sq_residuals;
-      total.status = s.status;
-      total.message = s.message;
-    }
-    if (s.status == OptimizationStatus::Diverged)
-    {
-      problem.poses = given;
-      total.status = s.status;
-      total.message = "stage " + std::to_string(k + 1) + " (c = " + std::to_string(stage.kernel_c) + "): " + s.message;
-      break;
-    }
-    total.stages = k + 1;
-    if (s.status == OptimizationStatus::NothingToOptimize || mu <= 1) break;
-    mu = std::max(1.0, mu / params.gnc_factor);
+    if (by_kind[kind].empty()) continue;
+    const double c = params.kernel_c * robustResidualScale(by_kind[kind]);
+    const double alpha = shapes.estimate(by_kind[kind], c).alpha;
+    limited = limited || alpha < alpha_floor;
+    k[kind] = {std::max(alpha, alpha_floor), c};
   }
-  if (total.status == OptimizationStatus::Diverged || total.status == OptimizationStatus::NothingToOptimize)
-  {
-    total.time_s = timer.Tac();
-    return total;
-  }
-  // The edges the kernel kept are inliers: a last least-squares solve on them alone, so that
-  // their noise is not down-weighted (with no outlier this is the least-squares optimum).
-  GraphProblem inliers = problem;
-  inliers.edges.clear();
-  const std::vector<size_t> off = switchedOffEdges(problem, params);
+  return k;
+}
+
+/** Whether two stages' kernels agree: each shape within half a grid step, each scale within
+ * 5%. */
+bool settled(const KindKernels& a, const KindKernels& b, double alpha_step)
+{
+  for (int kind = 0; kind < kEdgeKindCount; ++kind)
+    if (std::abs(a[kind].alpha - b[kind].alpha) > 0.5 * alpha_step + 1e-12 ||
+        std::abs(a[kind].c - b[kind].c) > 0.05 * std::max(a[kind].c, b[kind].c))
+      return false;
+  return true;
+}
+
+/** Rounds of least squares on the kept edges at most. */
+constexpr size_t kMaxRefits = 3;
+
+/** Least squares on the edges not in `off` (increasing indices), from the problem's poses and
+ * from `given`: the stages end near the inliers' optimum but may sit in another basin of it
+ * (a long chain bent the other way), so the lower chi2 wins. Without the false edges both
+ * solves are sparse. The problem's poses take the result unless both diverged. */
+OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<size_t>& off,
+                                      const std::vector<geometry::Pose2>& given, const GraphOptimizerParams& params)
+{
+  GraphProblem kept = problem;
+  kept.edges.clear();
   for (size_t n = 0, k = 0; n < problem.edges.size(); ++n)
   {
     if (k < off.size() && off[k] == n)
       ++k;
     else
-      inliers.edges.push_back(problem.edges[n]);
+      kept.edges.push_back(problem.edges[n]);
   }
-  GraphOptimizerParams l2 = stage;
-  l2.kernel_alpha = 2;
-  l2.max_iterations = params.max_iterations;
-  const OptimizationReport refit = optimizeWithKernel(inliers, l2);
-  total.iterations += refit.iterations;
-  total.accepted_steps += refit.accepted_steps;
-  if (refit.status != OptimizationStatus::Diverged) problem.poses = inliers.poses;
-  const Evaluation end = evaluate(problem, problem.poses, params.kernel(), measurementRotations(problem));
+  GraphProblem from_given = kept;
+  from_given.poses = given;
+  const KindKernels l2 = uniformKernels({2.0, params.kernel_c});
+  OptimizationReport a = optimizeWithKernels(kept, params, l2);
+  const OptimizationReport b = optimizeWithKernels(from_given, params, l2);
+  const bool take_b = b.status != OptimizationStatus::Diverged &&
+                      (a.status == OptimizationStatus::Diverged || b.final_chi2 < a.final_chi2);
+  if (take_b) kept.poses = from_given.poses;
+  OptimizationReport best = take_b ? b : a;
+  best.iterations = a.iterations + b.iterations;
+  best.accepted_steps = a.accepted_steps + b.accepted_steps;
+  if (best.status != OptimizationStatus::Diverged) problem.poses = kept.poses;
+  return best;
+}
+
+/** Graduated stages stop lowering the shape's bound here; a lower target comes next. */
+constexpr double kLowestGraduatedAlpha = -10.0;
+
+/** Graduated non-convexity (KernelSchedule::Gnc, ::Adaptive): stages of a few iterations
+ * each, the shape bounded below by 1, 1 - gnc_alpha_step, ... (convex at first), each stage
+ * from the last one's poses; then least squares on the edges the last stage's kernel kept,
+ * so that their noise is not down-weighted (with no outlier this is the least-squares
+ * optimum). */
+OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  mrpt::system::CTicTac timer;
+  params.check();
+  checkProblem(problem);
+  const bool adaptive = params.kernel_schedule == KernelSchedule::Adaptive;
+  std::optional<ShapeEstimator> shapes;
+  if (adaptive) shapes.emplace(params.adaptive_alpha_min, params.adaptive_alpha_step, params.adaptive_truncation);
+  const double alpha_end = adaptive ? params.adaptive_alpha_min : params.kernel_alpha;
+  const std::vector<geometry::Pose2> given = problem.poses;
+  GraphOptimizerParams stage = params;
+  stage.max_iterations = std::min(params.max_iterations, params.gnc_stage_iterations);
+  OptimizationReport total;
+  KindKernels kernels, previous;
+  for (size_t k = 0;; ++k)
+  {
+    // The bound of this stage's shape: 1 (convex), then lower by gnc_alpha_step each stage;
+    // the last one is alpha_end (a shape below kLowestGraduatedAlpha is reached at once).
+    double floor = 1.0 - static_cast<double>(k) * params.gnc_alpha_step;
+    const bool last = floor <= alpha_end || floor < kLowestGraduatedAlpha;
+    if (last) floor = alpha_end;
+    bool limited = !last;  // gnc: the stages go on down to the target
+    kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, limited)
+                       : uniformKernels({floor, params.kernel_c});
+    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels);
+    if (k == 0)
+    {
+      total = s;
+      total.initial_cost = evaluate(problem, given, kernels, measurementRotations(problem)).cost;
+    }
+    else
+    {
+      total.iterations += s.iterations;
+      total.accepted_steps += s.accepted_steps;
+      total.status = s.status;
+      total.message = s.message;
+    }
+    total.stages = k + 1;
+    if (s.status == OptimizationStatus::Diverged)
+    {
+      problem.poses = given;
+      total.message = "stage " + std::to_string(k + 1) + ": " + s.message;
+      total.time_s = timer.Tac();
+      return total;
+    }
+    if (s.status == OptimizationStatus::NothingToOptimize)
+    {
+      total.time_s = timer.Tac();
+      return total;
+    }
+    // Done at the last bound, or (adaptive) when the bound no longer holds a shape back and
+    // the estimate has settled: from a poor guess every residual is large, so the first
+    // scales are wide and the shapes near 2 until the poses come near the inliers.
+    if (last || (!limited && k > 0 && settled(previous, kernels, params.adaptive_alpha_step))) break;
+    previous = kernels;
+  }
+  // The kernels at the result decide which edges are kept.
+  if (adaptive)
+  {
+    bool limited = false;
+    kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, limited);
+  }
+  // Least squares on the kept edges. An edge the stages left switched off that agrees with
+  // that result is kept after all, and the solve is repeated, until the kept set is stable.
+  std::vector<size_t> off = switchedOffEdges(problem, kernels, params.switched_off_weight);
+  size_t kept = 0;
+  OptimizationReport refit;
+  for (size_t round = 0; round < kMaxRefits; ++round)
+  {
+    refit = leastSquaresOnKept(problem, off, given, params);
+    kept = problem.edges.size() - off.size();
+    total.iterations += refit.iterations;
+    total.accepted_steps += refit.accepted_steps;
+    if (refit.status == OptimizationStatus::Diverged) break;
+    std::vector<size_t> again = switchedOffEdges(problem, kernels, params.switched_off_weight);
+    if (again == off) break;
+    off.swap(again);
+  }
+  const Evaluation end = evaluate(problem, problem.poses, kernels, measurementRotations(problem));
+  total.kernels = kernels;
   total.final_chi2 = end.chi2;
   total.final_cost = end.cost;
   total.active_sq_residuals = end.active;
-  total.message = "graduated non-convexity, " + std::to_string(total.stages) + " stages, then least squares on the " +
-                  std::to_string(inliers.edges.size()) + " edges kept: " + total.message;
+  total.message = std::string(adaptive ? "adaptive kernel" : "graduated non-convexity") + ", " +
+                  std::to_string(total.stages) + " stages, then least squares on the " +
+                  std::to_string(kept) + " edges kept: " + refit.message;
   total.time_s = timer.Tac();
   return total;
 }
@@ -400,10 +503,12 @@ OptimizationReport optimizeGnc(GraphProblem& problem, const GraphOptimizerParams
 
 OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params)
 {
-  OptimizationReport rep = params.kernel_schedule == KernelSchedule::Gnc ? optimizeGnc(problem, params)
-                                                                          : optimizeWithKernel(problem, params);
+  OptimizationReport rep = params.kernel_schedule == KernelSchedule::Fixed
+                               ? optimizeWithKernels(problem, params, uniformKernels(params.kernel()))
+                               : optimizeGraduated(problem, params);
   // Which robustified edges the kernel has switched off at the result.
-  if (rep.status != OptimizationStatus::NothingToOptimize) rep.switched_off = switchedOffEdges(problem, params);
+  if (rep.status != OptimizationStatus::NothingToOptimize)
+    rep.switched_off = switchedOffEdges(problem, rep.kernels, params.switched_off_weight);
   return rep;
 }
 

@@ -7,6 +7,7 @@
 #include <swslam/geometry/se2_error.h>
 #include <swslam/graph/optimizer_params.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct GraphProblem
     geometry::Pose2 z = geometry::Pose2::Zero();       ///< pose of j seen from i
     Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
     bool robust = false;           ///< weighted by the Barron kernel
+    EdgeKind kind = EdgeKind::Loop;  ///< which kernel weighs it (adaptive: one per kind)
   };
   std::vector<geometry::Pose2> poses;
   std::vector<char> fixed;  ///< per pose; a connected component with none fixed is held at its first pose
@@ -34,6 +36,10 @@ enum class OptimizationStatus
   Diverged            ///< non-finite cost or failed solve: poses left as they were
 };
 const char* statusName(OptimizationStatus s);
+
+/** A Barron kernel per edge kind (indexed by EdgeKind). */
+using KindKernels = std::array<BarronKernel, kEdgeKindCount>;
+KindKernels uniformKernels(const BarronKernel& k);
 
 struct OptimizationReport
 {
@@ -50,7 +56,9 @@ struct OptimizationReport
   /** Connected components of the poses; each one without a fixed pose is held at its first
    * pose (a graph that falls apart into pieces has nothing to tie them together). */
   size_t components = 0;
-  size_t stages = 1;            ///< graduated non-convexity: kernel scales optimized in turn
+  size_t stages = 1;            ///< gnc, adaptive: kernels optimized in turn
+  /** The kernel per edge kind at the end (adaptive: as estimated from the residuals). */
+  KindKernels kernels{};
   std::vector<size_t> switched_off;  ///< robustified edges whose final weight is below switched_off_weight
   std::string message;          ///< why it stopped, in words
 };
@@ -65,12 +73,14 @@ void checkProblem(const GraphProblem& problem);
 /** sqrt(e^T Omega e) of each robustified edge at the problem's poses (0 for the others). */
 std::vector<double> robustResiduals(const GraphProblem& problem);
 
-/** The robustified edges (indices into problem.edges, increasing) whose weight under params'
- * kernel is below params.switched_off_weight at the problem's poses. */
+/** The robustified edges (indices into problem.edges, increasing) whose weight under their
+ * kind's kernel is below `weight` at the problem's poses. */
+std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const KindKernels& kernels, double weight);
+/** The same with params' kernel for every kind and params.switched_off_weight. */
 std::vector<size_t> switchedOffEdges(const GraphProblem& problem, const GraphOptimizerParams& params);
 
-/** Optimizes problem.poses in place, with the kernel schedule of params (fixed, or graduated
- * non-convexity), and reports the robustified edges the kernel switched off. On Diverged the
+/** Optimizes problem.poses in place, with the kernel schedule of params (fixed, graduated
+ * non-convexity or adaptive), and reports the robustified edges the kernel switched off. On Diverged the
  * poses are left exactly as given. */
 OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params);
 

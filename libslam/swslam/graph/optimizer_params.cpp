@@ -46,17 +46,32 @@ void GraphOptimizerParams::check() const
     throw std::invalid_argument("graph_optimizer: max_iterations must be >= 1");
   if (gnc_stage_iterations < 1)
     throw std::invalid_argument("graph_optimizer: gnc_stage_iterations must be >= 1");
-  if (!(gnc_factor > 1 && gnc_factor <= 100))
-    throw std::invalid_argument("graph_optimizer: gnc_factor must be in (1, 100]");
+  if (!(gnc_alpha_step > 0 && gnc_alpha_step <= 10))
+    throw std::invalid_argument("graph_optimizer: gnc_alpha_step must be in (0, 10]");
+  if (!(adaptive_alpha_min >= -100 && adaptive_alpha_min < 2))
+    throw std::invalid_argument("graph_optimizer: adaptive_alpha_min must be in [-100, 2)");
+  if (!(adaptive_alpha_step >= 0.01 && adaptive_alpha_step <= 2 - adaptive_alpha_min))
+    throw std::invalid_argument("graph_optimizer: adaptive_alpha_step must be in [0.01, 2 - adaptive_alpha_min]");
+  if (!(adaptive_truncation > 1 && adaptive_truncation <= 1000))
+    throw std::invalid_argument("graph_optimizer: adaptive_truncation must be in (1, 1000]");
   if (!(switched_off_weight >= 0 && switched_off_weight < 1))
     throw std::invalid_argument("graph_optimizer: switched_off_weight must be in [0, 1)");
 }
 
-const char* kernelScheduleName(KernelSchedule s) { return s == KernelSchedule::Gnc ? "gnc" : "fixed"; }
+const char* kernelScheduleName(KernelSchedule s)
+{
+  switch (s)
+  {
+    case KernelSchedule::Fixed: return "fixed";
+    case KernelSchedule::Gnc: return "gnc";
+    case KernelSchedule::Adaptive: return "adaptive";
+  }
+  return "?";
+}
 
 std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name)
 {
-  for (const KernelSchedule s : {KernelSchedule::Fixed, KernelSchedule::Gnc})
+  for (const KernelSchedule s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive})
     if (name == kernelScheduleName(s)) return s;
   return std::nullopt;
 }
@@ -68,10 +83,13 @@ void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBas
   MRPT_LOAD_CONFIG_VAR(kernel_c, double, c, s);
   const std::string schedule = c.read_string(s, "kernel_schedule", kernelScheduleName(kernel_schedule));
   const auto parsed = kernelScheduleFromName(schedule);
-  if (!parsed) throw std::invalid_argument("graph_optimizer: kernel_schedule '" + schedule + "' is not fixed or gnc");
+  if (!parsed) throw std::invalid_argument("graph_optimizer: kernel_schedule '" + schedule + "' is not fixed, gnc or adaptive");
   kernel_schedule = *parsed;
-  MRPT_LOAD_CONFIG_VAR(gnc_factor, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(gnc_alpha_step, double, c, s);
   gnc_stage_iterations = c.read_uint64_t(s, "gnc_stage_iterations", gnc_stage_iterations);
+  MRPT_LOAD_CONFIG_VAR(adaptive_alpha_min, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(adaptive_alpha_step, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(adaptive_truncation, double, c, s);
   MRPT_LOAD_CONFIG_VAR(switched_off_weight, double, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_consecutive, bool, c, s);
   MRPT_LOAD_CONFIG_VAR(robust_dense_neighbour, bool, c, s);
@@ -99,10 +117,13 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
           "Barron kernel shape in [-inf, 2]: 2 L2, 1 L1-like, 0 Cauchy, -2 Geman-McClure, -inf Welsch");
   c.write(s, "kernel_c", kernel_c, -1, -1, "kernel scale, in standard deviations of the residual");
   c.write(s, "kernel_schedule", std::string(kernelScheduleName(kernel_schedule)), -1, -1,
-          "fixed: the kernel from the start; gnc: graduated non-convexity, from a scale where every residual is an inlier down to kernel_c");
-  c.write(s, "gnc_factor", gnc_factor, -1, -1, "gnc: the scale's squared multiple is divided by this each stage");
-  c.write(s, "gnc_stage_iterations", gnc_stage_iterations, -1, -1,
-          "gnc: LM iterations per stage before the last");
+          "fixed: the kernel from the start; gnc: graduated non-convexity from alpha 1 down to kernel_alpha; adaptive: each stage's shape and scale estimated from the residuals");
+  c.write(s, "gnc_alpha_step", gnc_alpha_step, -1, -1, "gnc, adaptive: the shape's bound falls by this each stage");
+  c.write(s, "gnc_stage_iterations", gnc_stage_iterations, -1, -1, "gnc, adaptive: LM iterations per stage");
+  c.write(s, "adaptive_alpha_min", adaptive_alpha_min, -1, -1, "adaptive: the lowest shape estimated");
+  c.write(s, "adaptive_alpha_step", adaptive_alpha_step, -1, -1, "adaptive: grid step of the shape estimate");
+  c.write(s, "adaptive_truncation", adaptive_truncation, -1, -1,
+          "adaptive: the residual density is truncated at this many scales");
   c.write(s, "switched_off_weight", switched_off_weight, -1, -1,
           "a robustified edge whose final weight is below this is reported as switched off");
   c.write(s, "robust_consecutive", robust_consecutive, -1, -1, "robustify consecutive edges");

@@ -13,17 +13,23 @@
 
 namespace swslam::graph
 {
-/** How the kernel is applied: as it is from the start (the paper), or by graduated
- * non-convexity (Yang et al., RA-L 2020): the scale starts where every residual of the
- * initial guess is an inlier (a convex, least-squares-like problem) and shrinks stage by
- * stage to kernel_c, each stage started from the last one's result. */
+/** How the kernel is applied (doc/graph-optimization.md):
+ * - Fixed: as it is from the start (the paper);
+ * - Gnc: graduated non-convexity along Barron's family (Barron, CVPR 2019, sec. 3; Yang et
+ *   al., RA-L 2020): the shape starts convex (alpha = 1) and falls by gnc_alpha_step each
+ *   stage to kernel_alpha, each stage started from the last one's result; then least squares
+ *   on the edges the kernel kept;
+ * - Adaptive: as Gnc, but each stage's shape and scale per edge kind are estimated from the
+ *   residuals (Chebrolu et al., RA-L 2021): the shape that fits them best, no lower than the
+ *   stage's bound, and the scale kernel_c times a robust residual scale. */
 enum class KernelSchedule
 {
   Fixed,
-  Gnc
+  Gnc,
+  Adaptive
 };
 const char* kernelScheduleName(KernelSchedule s);
-/** "fixed" or "gnc"; nothing for another name. */
+/** "fixed", "gnc" or "adaptive"; nothing for another name. */
 std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name);
 
 struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
@@ -31,15 +37,20 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
   // Barron kernel (paper eq. 14) on r = sqrt(e^T Omega e), so c is in standard deviations.
   double kernel_alpha = 0.0;  ///< [-inf, 2]: 2 L2, 0 Cauchy, -2 Geman-McClure, -inf Welsch
   double kernel_c = 3.0;      ///< residual (Mahalanobis) where down-weighting begins
-  KernelSchedule kernel_schedule = KernelSchedule::Fixed;  ///< ini: kernel_schedule = fixed | gnc
-  /** GNC: mu, the square of the scale's multiple of kernel_c, starts at
-   * max(1, 2 r_max^2 / kernel_c^2) (r_max: the largest robustified residual of the initial
-   * guess) and is divided by this each stage down to 1. */
-  double gnc_factor = 2.0;
-  /** GNC: LM iterations per stage before the last (each stage only needs to bring the poses
-   * near the next, slightly less convex, problem's basin); the last stage and the least-squares
-   * solve on the edges kept get max_iterations. */
+  KernelSchedule kernel_schedule = KernelSchedule::Fixed;  ///< ini: fixed | gnc | adaptive
+  /** gnc, adaptive: the shape's bound falls by this each stage, from 1 (convex) down to
+   * kernel_alpha (gnc) or adaptive_alpha_min (adaptive). */
+  double gnc_alpha_step = 1.0;
+  /** gnc, adaptive: LM iterations per stage (each stage only brings the poses near the next,
+   * less convex, problem's basin); the least-squares solve on the edges kept gets
+   * max_iterations. */
   size_t gnc_stage_iterations = 3;
+  /** adaptive: the lowest shape estimated, and the grid step of the estimate. */
+  double adaptive_alpha_min = -10.0;
+  double adaptive_alpha_step = 0.1;
+  /** adaptive: the density of the residuals over the scale is truncated at this many scales
+   * (so that it can be normalized for every shape). */
+  double adaptive_truncation = 10.0;
   /** A robustified edge whose final weight (1 for an inlier) is below this is reported as
    * switched off (OptimizationReport::switched_off). */
   double switched_off_weight = 0.1;

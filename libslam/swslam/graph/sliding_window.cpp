@@ -53,6 +53,7 @@ class SubproblemBuilder
     pe.z = toPose2(e.measurement->mean);
     pe.information = e.measurement->cov_inv.asEigen();
     pe.robust = params_.isRobust(e.kind);
+    pe.kind = e.kind;
     sub_.problem.edges.push_back(pe);
   }
 
