@@ -5,7 +5,8 @@
 // MRPT's deserializers trust every count and length in the file: a damaged entry crashed
 // them or made them allocate tens of gigabytes. So the entries are decoded in a child process
 // (io/sandboxed_decoder.h) under a memory budget (kDecoderMemoryBudget), which sends each item
-// re-serialized; a crash or an exhausted budget there is a RawlogError here, naming the entry.
+// re-serialized; a crash, an exhausted budget or a stall (kDecoderStallTimeout) there is a
+// RawlogError here, naming the entry.
 // Construct readers before the process starts threads (the child is a fork).
 
 #include <swslam/io/sandboxed_decoder.h>

@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <new>
+#include <poll.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -23,6 +24,7 @@ struct SandboxedDecoder::Shared
 {
   std::atomic<uint64_t> index{0};
   std::atomic<uint64_t> offset{0};
+  std::atomic<uint64_t> steps{0};  ///< marks and frames so far: the child's progress
   std::atomic<int> out_of_memory{0};
 };
 
@@ -56,21 +58,6 @@ void onOutOfMemory()
   throw std::bad_alloc();
 }
 
-/** Reads up to `len` bytes; fewer only at the end of the pipe. */
-size_t readFully(int fd, void* buf, size_t len)
-{
-  size_t got = 0;
-  while (got < len)
-  {
-    const ssize_t r = ::read(fd, static_cast<char*>(buf) + got, len - got);
-    if (r > 0)
-      got += static_cast<size_t>(r);
-    else if (r == 0 || errno != EINTR)
-      break;
-  }
-  return got;
-}
-
 bool writeFully(int fd, const char* buf, size_t len)
 {
   while (len > 0)
@@ -88,8 +75,8 @@ bool writeFully(int fd, const char* buf, size_t len)
 class PipeChannel : public DecodeChannel
 {
  public:
-  PipeChannel(int fd, std::atomic<uint64_t>& index, std::atomic<uint64_t>& offset)
-      : fd_(fd), index_(index), offset_(offset)
+  PipeChannel(int fd, std::atomic<uint64_t>& index, std::atomic<uint64_t>& offset, std::atomic<uint64_t>& steps)
+      : fd_(fd), index_(index), offset_(offset), steps_(steps)
   {
   }
   void mark(DecodePosition at) override
@@ -97,6 +84,7 @@ class PipeChannel : public DecodeChannel
     at_ = at;
     index_.store(at.index);
     offset_.store(at.offset);
+    steps_++;
   }
   void send(double fraction, const std::string& payload) override { frame(FrameKind::Data, fraction, payload); }
   void frame(FrameKind kind, double fraction, const std::string& payload)
@@ -104,6 +92,7 @@ class PipeChannel : public DecodeChannel
     const FrameHeader h{static_cast<uint8_t>(kind), at_.index, at_.offset, fraction, payload.size()};
     buffer_.assign(reinterpret_cast<const char*>(&h), sizeof(h));
     buffer_ += payload;
+    steps_++;
     // The parent stopped reading (it closed the pipe, or died): nothing left to do.
     if (!writeFully(fd_, buffer_.data(), buffer_.size())) _exit(3);
   }
@@ -112,6 +101,7 @@ class PipeChannel : public DecodeChannel
   int fd_;
   std::atomic<uint64_t>& index_;
   std::atomic<uint64_t>& offset_;
+  std::atomic<uint64_t>& steps_;
   DecodePosition at_;
   std::string buffer_;
 };
@@ -150,12 +140,13 @@ void isolateChild(int fd, uint64_t memory_budget)
 }
 
 [[noreturn]] void runChild(const SandboxedDecoder::Work& work, int fd, std::atomic<uint64_t>& index,
-                           std::atomic<uint64_t>& offset, std::atomic<int>& out_of_memory, uint64_t memory_budget)
+                           std::atomic<uint64_t>& offset, std::atomic<uint64_t>& steps,
+                           std::atomic<int>& out_of_memory, uint64_t memory_budget)
 {
   isolateChild(fd, memory_budget);
   g_out_of_memory = &out_of_memory;
   std::set_new_handler(onOutOfMemory);
-  PipeChannel channel(fd, index, offset);
+  PipeChannel channel(fd, index, offset, steps);
   int code = 0;
   try
   {
@@ -196,7 +187,8 @@ std::string formatBytes(uint64_t bytes)
   return std::to_string(bytes) + " bytes";
 }
 
-SandboxedDecoder::SandboxedDecoder(Work work, uint64_t memory_budget) : memory_budget_(memory_budget)
+SandboxedDecoder::SandboxedDecoder(Work work, uint64_t memory_budget, std::chrono::milliseconds stall_timeout)
+    : memory_budget_(memory_budget), stall_timeout_(stall_timeout)
 {
   void* page = mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (page == MAP_FAILED) throw std::runtime_error(std::string("decoder: cannot map its shared page: ") + std::strerror(errno));
@@ -212,7 +204,7 @@ SandboxedDecoder::SandboxedDecoder(Work work, uint64_t memory_budget) : memory_b
   if (pid == 0)
   {
     ::close(fds[0]);
-    runChild(work, fds[1], shared_->index, shared_->offset, shared_->out_of_memory, memory_budget);
+    runChild(work, fds[1], shared_->index, shared_->offset, shared_->steps, shared_->out_of_memory, memory_budget);
   }
   const int fork_errno = errno;
   ::close(fds[1]);
@@ -277,26 +269,62 @@ DecodeFailure SandboxedDecoder::deathFailure()
   return DecodeFailure(what, at);
 }
 
+DecodeFailure SandboxedDecoder::failed(DecodeFailure f)
+{
+  reap(true);
+  failure_ = f.what();
+  failed_at_ = f.at();
+  return f;
+}
+
+size_t SandboxedDecoder::receive(void* buf, size_t len)
+{
+  size_t got = 0;
+  uint64_t steps = shared_->steps.load();
+  auto waited = std::chrono::milliseconds(0);
+  constexpr auto kPollPeriod = std::chrono::milliseconds(100);
+  while (got < len)
+  {
+    pollfd p{fd_, POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(std::min(kPollPeriod, stall_timeout_).count()));
+    if (ready == 0)
+    {
+      // Nothing to read: fine while the child moves on (entries that give no frame).
+      const uint64_t now = shared_->steps.load();
+      waited = now == steps ? waited + std::min(kPollPeriod, stall_timeout_) : std::chrono::milliseconds(0);
+      steps = now;
+      if (waited < stall_timeout_) continue;
+      throw failed(DecodeFailure("the decoder made no progress for " + std::to_string(stall_timeout_.count()) +
+                                     " ms on this entry (stuck: stopped)",
+                                 {shared_->index.load(), shared_->offset.load()}));
+    }
+    if (ready < 0 && errno == EINTR) continue;
+    const ssize_t r = ::read(fd_, static_cast<char*>(buf) + got, len - got);
+    if (r > 0)
+    {
+      got += static_cast<size_t>(r);
+      waited = std::chrono::milliseconds(0);
+    }
+    else if (r == 0 || errno != EINTR)
+      break;
+  }
+  return got;
+}
+
 bool SandboxedDecoder::next(DecodedFrame& frame)
 {
   if (!failure_.empty()) throw DecodeFailure(failure_, failed_at_);
   if (ended_) return false;
-  auto fail = [&](const DecodeFailure& f) {
-    reap(true);
-    failure_ = f.what();
-    failed_at_ = f.at();
-    return f;
-  };
   FrameHeader h{};
-  if (readFully(fd_, &h, sizeof(h)) < sizeof(h)) throw fail(deathFailure());
+  if (receive(&h, sizeof(h)) < sizeof(h)) throw failed(deathFailure());
   frame.at = {h.index, h.offset};
   frame.fraction = h.fraction;
   if (h.length > kMaxDecodedFrameBytes)
-    throw fail(DecodeFailure("the decoder sent a frame of " + std::to_string(h.length) + " bytes (more than " +
+    throw failed(DecodeFailure("the decoder sent a frame of " + std::to_string(h.length) + " bytes (more than " +
                                  formatBytes(kMaxDecodedFrameBytes) + ")",
                              frame.at));
   frame.payload.resize(h.length);
-  if (readFully(fd_, frame.payload.data(), h.length) < h.length) throw fail(deathFailure());
+  if (receive(frame.payload.data(), h.length) < h.length) throw failed(deathFailure());
   switch (static_cast<FrameKind>(h.kind))
   {
     case FrameKind::Data:
@@ -306,9 +334,9 @@ bool SandboxedDecoder::next(DecodedFrame& frame)
       reap(false);
       return false;
     case FrameKind::Error:
-      throw fail(DecodeFailure(shared_->out_of_memory.load() ? overBudget(memory_budget_) : frame.payload, frame.at));
+      throw failed(DecodeFailure(shared_->out_of_memory.load() ? overBudget(memory_budget_) : frame.payload, frame.at));
   }
-  throw fail(DecodeFailure("the decoder sent a frame of unknown kind " + std::to_string(h.kind), frame.at));
+  throw failed(DecodeFailure("the decoder sent a frame of unknown kind " + std::to_string(h.kind), frame.at));
 }
 
 }  // namespace swslam::io

@@ -10,6 +10,7 @@
 // by one. Construct it before the process starts threads: the child is a fork of the parent,
 // and a lock another thread held at the fork would stay held in the child.
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -61,6 +62,9 @@ class DecodeChannel
 constexpr uint64_t kDecoderMemoryBudget = uint64_t(1) << 30;
 /** The largest frame the parent accepts (a frame is one re-serialized rawlog item). */
 constexpr uint64_t kMaxDecodedFrameBytes = uint64_t(256) << 20;
+/** A child that stays this long at one marked position while the parent waits for it is
+ * stuck (one rawlog entry decodes in milliseconds): it is stopped, and that is the failure. */
+constexpr std::chrono::milliseconds kDecoderStallTimeout{60000};
 
 class SandboxedDecoder
 {
@@ -71,8 +75,11 @@ class SandboxedDecoder
   using Work = std::function<void(DecodeChannel&)>;
 
   /** Forks the child that runs `work` with its address space limited to its size at the fork
-   * plus `memory_budget` bytes. Throws std::runtime_error if the child cannot be started. */
-  explicit SandboxedDecoder(Work work, uint64_t memory_budget = kDecoderMemoryBudget);
+   * plus `memory_budget` bytes, and stopped if it stays `stall_timeout` at one marked
+   * position while the parent waits. Throws std::runtime_error if the child cannot be
+   * started. */
+  explicit SandboxedDecoder(Work work, uint64_t memory_budget = kDecoderMemoryBudget,
+                            std::chrono::milliseconds stall_timeout = kDecoderStallTimeout);
   /** Stops the child if it still runs, and reaps it. */
   ~SandboxedDecoder();
   SandboxedDecoder(const SandboxedDecoder&) = delete;
@@ -89,11 +96,17 @@ class SandboxedDecoder
   int reap(bool kill_first);
   /** The failure after the pipe ended without an end frame: the child's death. */
   DecodeFailure deathFailure();
+  /** Stops the child and keeps `f` for every later next(); returns it. */
+  DecodeFailure failed(DecodeFailure f);
+  /** Reads `len` bytes from the pipe (fewer only at its end). Throws DecodeFailure if the
+   * child stays at one position for the stall timeout meanwhile. */
+  size_t receive(void* buf, size_t len);
 
   Shared* shared_ = nullptr;  ///< the page shared with the child
   int fd_ = -1;               ///< the pipe's read end
   int pid_ = -1;              ///< the child, until reaped
   uint64_t memory_budget_;
+  std::chrono::milliseconds stall_timeout_;
   std::string failure_;       ///< set once the decoding failed: every later next() throws it
   DecodePosition failed_at_;
   bool ended_ = false;

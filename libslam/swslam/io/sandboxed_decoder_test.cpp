@@ -144,6 +144,36 @@ TEST(SandboxedDecoder, ExitingWithoutTheEndIsAFailure)
   EXPECT_EQ(e.at().index, 5u);
 }
 
+TEST(SandboxedDecoder, AChildStuckAtOnePositionIsStopped)
+{
+  using std::chrono::milliseconds;
+  const auto t0 = std::chrono::steady_clock::now();
+  SandboxedDecoder stuck([](DecodeChannel& ch) {
+    ch.mark({0, 0});
+    ch.send(0, "good");
+    ch.mark({9, 90});
+    for (;;) pause();
+  }, kDecoderMemoryBudget, milliseconds(300));
+  std::vector<DecodedFrame> read;
+  const DecodeFailure e = failureOf(stuck, &read);
+  EXPECT_EQ(read.size(), 1u);
+  EXPECT_STREQ(e.what(), "the decoder made no progress for 300 ms on this entry (stuck: stopped)");
+  EXPECT_EQ(e.at().index, 9u);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+
+  // Slow, but moving on (entries that give no frame): not stuck.
+  SandboxedDecoder slow([](DecodeChannel& ch) {
+    for (uint64_t k = 0; k < 8; k++)
+    {
+      ch.mark({k, k});
+      usleep(100000);
+    }
+  }, kDecoderMemoryBudget, milliseconds(300));
+  DecodedFrame f;
+  EXPECT_FALSE(slow.next(f));
+  EXPECT_EQ(f.at.index, 7u);
+}
+
 TEST(SandboxedDecoder, DestroyedEarlyItStopsItsChildWhateverItDoes)
 {
   const auto t0 = std::chrono::steady_clock::now();
