@@ -55,7 +55,10 @@ int main(int argc, char** argv)
     std::cout << "wrote " << opts.output;
     if (!opts.ground_truth.empty()) std::cout << " and " << opts.ground_truth;
     std::cout << "\n" << swslam::io::formatCarmenStats(stats);
-    return 0;
+    if (stats.damage.empty()) return 0;
+    std::cerr << "swslam-carmen2rawlog: " << stats.damage << "; wrote the " << stats.scans()
+              << " scans before it\n";
+    return 2;
   }
   catch (const std::exception& e)
   {

@@ -79,4 +79,24 @@ done
 if "$BIN" -i "$DIR/missing.log" -o "$DIR/none.rawlog" 2> "$DIR/err.txt"; then fail "missing input accepted"; fi
 grep -q "cannot open" "$DIR/err.txt" || fail "error message: $(cat "$DIR/err.txt")"
 [ ! -e "$DIR/none.rawlog" ] || fail "output written for a missing input"
+
+# A .log.gz cut short: the scans before the cut are written, the cut said, exit 2.
+head -c "$(( $(stat -c %s "$DIR/tiny.log.gz") - 40 ))" "$DIR/tiny.log.gz" > "$DIR/cut.log.gz"
+set +e
+"$BIN" -i "$DIR/cut.log.gz" -o "$DIR/cut.rawlog" --ground-truth "$DIR/cut.tum" > "$DIR/cut.txt" 2> "$DIR/cut.err"
+code=$?
+set -e
+[ "$code" = 2 ] || fail "a cut .log.gz exited $code: $(cat "$DIR/cut.err")"
+grep -q "the gzip stream is cut short after .* bytes of content (a truncated file), after line" "$DIR/cut.err" ||
+  fail "cut not said: $(cat "$DIR/cut.err")"
+gzip -t "$DIR/cut.rawlog" || fail "no valid rawlog of the scans before the cut"
+[ "$(grep -vc '^#' "$DIR/cut.tum")" -ge 1 ] || fail "no ground truth of the scans before the cut"
+
+# Stamps in microseconds (a 2023 clock): refused, saying so; nothing written.
+zcat "$DIR/tiny.log.gz" | awk '/^(FLASER|ODOM)/ { $(NF) = sprintf("%.0f", 1.7e15 + $(NF) * 1e6); $(NF - 2) = $(NF) } { print }' \
+  > "$DIR/us.log"
+if "$BIN" -i "$DIR/us.log" -o "$DIR/us.rawlog" 2> "$DIR/us.err"; then fail "a log in microseconds accepted"; fi
+grep -q "timestamps are out of range.*(microseconds rather than seconds?): not converted" "$DIR/us.err" ||
+  fail "microseconds not said: $(cat "$DIR/us.err")"
+[ ! -e "$DIR/us.rawlog" ] || fail "output written for a log in microseconds"
 echo "carmen2rawlog_test: OK"

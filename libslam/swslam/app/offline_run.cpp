@@ -117,6 +117,17 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   }
   slam->finish();
   bar.done();
+  // A log whose clock is not in seconds (microseconds...) or does not run is not a run with a
+  // few skips.
+  const size_t bad_stamps = skips.count(system::FeedStatus::TimestampOutOfRange) +
+                            skips.count(system::FeedStatus::TimestampNotIncreasing);
+  if (2 * bad_stamps > read)
+  {
+    err << "swslam: " << bad_stamps << " of the " << read
+        << " scans read were skipped for their timestamps (see above): is the log's clock in seconds, and "
+           "increasing? (CARMEN logs: swslam-carmen2rawlog --repair-timestamps)\n";
+    if (code == kExitOk) code = kExitInputError;
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (stop.requested())
   {

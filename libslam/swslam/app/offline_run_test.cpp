@@ -12,11 +12,13 @@
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 #include <octomap/OcTree.h>
 
 #include <filesystem>
+#include <functional>
 #include <set>
 #include <fstream>
 #include <sstream>
@@ -227,5 +229,57 @@ TEST(OfflineRun, ARerunReplacesEveryOutputOfThePreviousRunAndTwoRunsDoNotShareAF
   for (const auto& f : runOutputFiles())
     if (f != "render.png") expected.insert(f);
   EXPECT_EQ(files, expected);
+  std::filesystem::remove_all(dir);
+}
+
+namespace
+{
+/** The first `n` scans (and the odometry among them) of lake-short, restamped by `stamp` (the
+ * scan's index, its time) into `path`. */
+void writeRestampedLake(const std::string& path, size_t n, const std::function<double(size_t, double)>& stamp)
+{
+  io::RawlogReader reader(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog");
+  mrpt::io::CFileGZOutputStream f(path);
+  auto arch = mrpt::serialization::archiveFrom(f);
+  io::RawlogItem item;
+  size_t scans = 0;
+  while (scans < n && reader.next(item))
+  {
+    if (!item.observation) continue;
+    const bool scan = static_cast<bool>(std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation));
+    item.observation->timestamp = mrpt::Clock::fromDouble(stamp(scans, mrpt::Clock::toDouble(item.observation->timestamp)));
+    arch << *item.observation;
+    scans += scan ? 1 : 0;
+  }
+}
+}  // namespace
+
+TEST(OfflineRun, AScanStampedBeyondTheYear2200IsSkippedAndSaid)
+{
+  const std::string dir = test::tempDir("offline_stamp_range");
+  OfflineRunOptions o = quickLakeRun(dir);
+  o.input = dir + "/one-bad.rawlog";
+  writeRestampedLake(o.input, 60, [](size_t k, double t) { return k == 30 ? 1e12 : t; });
+  std::ostringstream out, err;
+  EXPECT_EQ(runOffline(o, out, err), kExitOk) << err.str();
+  EXPECT_NE(err.str().find("skipped input scan 30: timestamp 1e+12 s is outside 1970-2200 (milliseconds rather than "
+                           "seconds?)"),
+            std::string::npos)
+      << err.str();
+  EXPECT_EQ(common::readTum(o.output + "/trajectory.tum").size(), 59u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OfflineRun, ALogWhoseStampsMostlyCannotBeUsedIsAnInputError)
+{
+  // Stamps in microseconds became 0 in MRPT's clock (a CARMEN log converted before the
+  // converter refused such logs): one scan was used, and the run said nothing was wrong.
+  const std::string dir = test::tempDir("offline_stamp_us");
+  OfflineRunOptions o = quickLakeRun(dir);
+  o.input = dir + "/us.rawlog";
+  writeRestampedLake(o.input, 60, [](size_t, double t) { return t * 1e6; });
+  std::ostringstream out, err;
+  EXPECT_EQ(runOffline(o, out, err), kExitInputError);
+  EXPECT_NE(err.str().find("59 of the 60 scans read were skipped for their timestamps"), std::string::npos) << err.str();
   std::filesystem::remove_all(dir);
 }

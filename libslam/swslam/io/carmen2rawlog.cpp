@@ -25,14 +25,25 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
         "(--laser-only --repair-timestamps)");
   CarmenLogReader reader(opts.input, opts.params, std::move(warn));
   std::vector<common::StampedPose> reference;
+  std::string damage;
   common::writeAtomically(opts.output, [&](const std::string& tmp) {
     mrpt::io::CFileGZOutputStream out;
     if (!out.open(tmp, opts.compress_level))
       throw std::runtime_error("carmen2rawlog: cannot write '" + tmp + "'");
     auto archive = mrpt::serialization::archiveFrom(out);
     CarmenRecord rec;
-    while (reader.next(rec))
+    for (;;)
     {
+      try
+      {
+        if (!reader.next(rec)) break;
+      }
+      catch (const GzipError& e)
+      {
+        // The lines before the damage are good: they are converted, and the damage said.
+        damage = e.what();
+        break;
+      }
       if (opts.reference_odometry && rec.reference_pose)  // only scans carry one
       {
         mrpt::obs::CObservationOdometry odometry;
@@ -44,12 +55,15 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
       archive << *rec.observation;
       if (rec.reference_pose) reference.push_back({rec.timestamp, *rec.reference_pose});
     }
+    if (reader.stats().scans() == 0 && !damage.empty()) throw std::runtime_error("carmen2rawlog: " + damage);
     if (reader.stats().scans() == 0)
       throw std::runtime_error("carmen2rawlog: no laser scan in '" + opts.input +
                                "' (is it a CARMEN log?)");
   });
   if (!opts.ground_truth.empty()) common::writeTum(opts.ground_truth, reference);
-  return reader.stats();
+  CarmenStats stats = reader.stats();
+  stats.damage = damage;
+  return stats;
 }
 
 std::string formatCarmenStats(const CarmenStats& s)
@@ -79,6 +93,7 @@ std::string formatCarmenStats(const CarmenStats& s)
     o << stream << ": " << t.count << " stamps, " << t.non_increasing << " non-increasing, "
       << t.forward_jumps << " forward jumps";
     if (t.negative) o << ", " << t.negative << " negative (written as 0)";
+    if (t.out_of_range) o << ", " << t.out_of_range << " out of range (lines skipped)";
     if (s.repairing)
       o << "; repaired " << t.repaired << " (period " << t.repair_period << " s)";
     else if (t.non_increasing + t.forward_jumps > 0)
@@ -90,6 +105,7 @@ std::string formatCarmenStats(const CarmenStats& s)
       << " s (negative times are not representable in MRPT)\n";
   if (s.geometry_warnings) o << "geometry warnings: " << s.geometry_warnings << "\n";
   if (s.saturation_glitches) o << "readings above the saturation value (no return): " << s.saturation_glitches << "\n";
+  if (!s.damage.empty()) o << "input damaged, converted up to there: " << s.damage << "\n";
   return o.str();
 }
 

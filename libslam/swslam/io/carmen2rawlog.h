@@ -23,8 +23,10 @@ struct Carmen2RawlogOptions
   CarmenParams params;
 };
 
-/** Converts, writing both outputs atomically. Throws std::runtime_error naming the
- * problem if the input cannot be read or holds no laser scan (nothing is written then), and
+/** Converts, writing both outputs atomically. If the input's gzip stream is cut short or
+ * corrupt, the lines before are converted and written, and the returned stats' `damage` says
+ * where it stopped. Throws std::runtime_error naming the problem if the input cannot be read
+ * or holds no laser scan (nothing is written then), and
  * std::invalid_argument for a compress level outside 0-9 or reference_odometry without
  * params.laser_only and params.repair_timestamps. */
 CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts,

@@ -1,5 +1,7 @@
 #include <swslam/io/carmen_log.h>
 
+#include <swslam/common/unix_time.h>
+
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include <algorithm>
@@ -24,15 +26,15 @@ CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& pa
 
 void CarmenLogReader::open()
 {
-  bool ok = false;
   try
   {
-    ok = std::filesystem::is_regular_file(path_) && file_.open(path_);
+    if (!std::filesystem::is_regular_file(path_)) throw std::runtime_error("not a file");
+    file_ = std::make_unique<GzipFile>(path_);
   }
   catch (const std::exception&)
   {
+    throw std::runtime_error("carmen: cannot open '" + path_ + "'");
   }
-  if (!ok) throw std::runtime_error("carmen: cannot open '" + path_ + "'");
   buffer_.clear();
   buffer_pos_ = 0;
   eof_ = false;
@@ -54,7 +56,17 @@ bool CarmenLogReader::nextLine(std::string& line)
     }
     line.append(buffer_, buffer_pos_, std::string::npos);
     buffer_.resize(1 << 16);
-    const size_t got = eof_ ? 0 : file_.Read(buffer_.data(), buffer_.size());
+    size_t got = 0;
+    try
+    {
+      got = eof_ ? 0 : file_->read(buffer_.data(), buffer_.size());
+    }
+    catch (const GzipError& e)
+    {
+      buffer_.clear();
+      throw GzipError("carmen: '" + path_ + "': " + e.what() + ", after line " + std::to_string(line_no_),
+                      e.contentRead());
+    }
     buffer_.resize(got);
     buffer_pos_ = 0;
     if (got == 0)
@@ -74,9 +86,19 @@ void CarmenLogReader::prescan()
   open();
   std::map<std::string, SaturationDetector> detectors;
   std::map<std::string, std::vector<double>> times;
+  size_t stamps = 0, out_of_range = 0, first_out_line = 0;
+  double first_out = 0;
   std::string text;
-  while (nextLine(text))
+  for (;;)
   {
+    try
+    {
+      if (!nextLine(text)) break;
+    }
+    catch (const GzipError&)
+    {
+      break;  // the second pass reports it, after the lines before it
+    }
     CarmenLine line;
     try
     {
@@ -86,9 +108,24 @@ void CarmenLogReader::prescan()
     {
       continue;
     }
-    if (line.kind == CarmenLine::Kind::Odometry && !params_.laser_only)
-      times["ODOM"].push_back(line.odometry.timestamp);
-    if (line.kind != CarmenLine::Kind::Laser) continue;
+    const bool odometry = line.kind == CarmenLine::Kind::Odometry && !params_.laser_only;
+    if (!odometry && line.kind != CarmenLine::Kind::Laser) continue;
+    const double stamp = odometry ? line.odometry.timestamp : line.laser.timestamp;
+    stamps++;
+    if (!stampInRange(stamp))
+    {
+      if (out_of_range++ == 0)
+      {
+        first_out = stamp;
+        first_out_line = line_no_;
+      }
+      continue;
+    }
+    if (odometry)
+    {
+      times["ODOM"].push_back(stamp);
+      continue;
+    }
     const auto& laser = line.laser;
     times[laser.label].push_back(laser.timestamp);
     auto it = detectors.try_emplace(laser.label, params_.saturation_rel_tol,
@@ -107,6 +144,14 @@ void CarmenLogReader::prescan()
                     "read as no return", glitches, *saturation_[label], d.largest());
       warn(printed_geometry_, path_ + ": " + label + ": " + buf);
     }
+  }
+  if (out_of_range > 0 && 2 * out_of_range > stamps)
+  {
+    char buf[200];
+    std::snprintf(buf, sizeof(buf), "%zu of %zu timestamps are out of range (beyond +-%.0f s, the year 2200; the first, %.6g, at line %zu)",
+                  out_of_range, stamps, common::kLatestPlausibleTime, first_out, first_out_line);
+    throw std::runtime_error("carmen: '" + path_ + "': " + buf + common::timeUnitHint(first_out) +
+                             ": not converted");
   }
   double earliest = 0;
   for (const auto& [stream, t] : times)
@@ -138,6 +183,24 @@ void CarmenLogReader::addParam(const std::string& name, const std::string& value
     throw CarmenLineError("PARAM " + name + ": value '" + value + "' is not a finite number");
   stats_.params++;
   if (numeric) log_params_[name] = v;
+}
+
+bool CarmenLogReader::stampInRange(double raw)
+{
+  // Negative stamps are shifted into the range (timestamp_offset): only their size is checked.
+  return common::plausibleUnixTime(std::abs(raw));
+}
+
+bool CarmenLogReader::keepStamp(const std::string& stream, double raw)
+{
+  if (stampInRange(raw)) return true;
+  stats_.timestamps[stream].out_of_range++;
+  char buf[120];
+  std::snprintf(buf, sizeof(buf), " timestamp %.6g s is out of range (beyond +-%.0f s, the year 2200)", raw,
+                common::kLatestPlausibleTime);
+  warn(printed_timestamps_, path_ + ":" + std::to_string(line_no_) + ": " + stream + buf +
+                                common::timeUnitHint(raw) + ": line skipped");
+  return false;
 }
 
 double CarmenLogReader::stampOf(const std::string& stream, double raw, size_t line)
@@ -222,7 +285,10 @@ bool CarmenLogReader::next(CarmenRecord& record)
       case CarmenLine::Kind::Blank: continue;
       case CarmenLine::Kind::Unknown: stats_.unknown_messages[line.message]++; continue;
       case CarmenLine::Kind::Param: continue;
-      case CarmenLine::Kind::Laser: convertLaser(line.laser, record); return true;
+      case CarmenLine::Kind::Laser:
+        if (!keepStamp(line.laser.label, line.laser.timestamp)) continue;
+        convertLaser(line.laser, record);
+        return true;
       case CarmenLine::Kind::Odometry:
       {
         if (params_.laser_only)
@@ -231,6 +297,7 @@ bool CarmenLogReader::next(CarmenRecord& record)
           continue;
         }
         const auto& o = line.odometry;
+        if (!keepStamp("ODOM", o.timestamp)) continue;
         auto obs = mrpt::obs::CObservationOdometry::Create();
         obs->sensorLabel = "ODOM";
         record.raw_timestamp = o.timestamp;
@@ -248,12 +315,12 @@ bool CarmenLogReader::next(CarmenRecord& record)
   return false;
 }
 
-double CarmenLogReader::fractionRead() const { return progress_.fraction(file_.getPosition()); }
+double CarmenLogReader::fractionRead() const { return progress_.fraction(file_->position()); }
 
 size_t CarmenStats::timestampProblems() const
 {
   size_t n = 0;
-  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps + t.negative;
+  for (const auto& [stream, t] : timestamps) n += t.non_increasing + t.forward_jumps + t.negative + t.out_of_range;
   return n;
 }
 

@@ -4,19 +4,20 @@
 // CObservationOdometry for ODOM, each with its line's own timestamp. PARAM lines set the
 // laser offsets, FOV and maximum range. Rules (max range, FOV, timestamps): doc/carmen.md.
 
+#include <swslam/io/gzip_file.h>
 #include <swslam/io/read_progress.h>
 #include <swslam/io/carmen_line.h>
 #include <swslam/io/carmen_params.h>
 #include <swslam/io/carmen_rules.h>
 #include <swslam/io/carmen_scan.h>
 
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,8 @@ struct CarmenStats
   {
     size_t count = 0, non_increasing = 0, forward_jumps = 0, repaired = 0;
     size_t negative = 0;       ///< still negative after timestamp_offset: written as 0
+    /** Of size beyond the year 2200 in seconds (common/unix_time.h): the line is skipped. */
+    size_t out_of_range = 0;
     double repair_period = 0;  ///< [s] used when repairing
   };
   std::map<std::string, Stamps> timestamps;  ///< by stream
@@ -55,6 +58,9 @@ struct CarmenStats
   size_t geometry_warnings = 0;
   size_t saturation_glitches = 0;  ///< readings above a laser's saturation pile (no return)
   size_t scans() const;
+  /** Why the reading stopped before the end of the file (its gzip stream is cut short or
+   * corrupt), naming the line it reached; empty if the file was read to its end. */
+  std::string damage;
 };
 
 /** One converted line. */
@@ -70,14 +76,18 @@ struct CarmenRecord
 /** Reads a CARMEN log one line at a time. The constructor makes a first pass over the
  * file (saturation values and timestamp periods, without keeping the data); next() then
  * streams the conversion. Warnings go to `warn` (default: stderr), the first
- * params.max_printed_warnings of each kind; stats() counts all of them. */
+ * params.max_printed_warnings of each kind; stats() counts all of them. A line whose timestamp
+ * is beyond +-2200-01-01 in seconds (common/unix_time.h) is skipped and counted; if most are,
+ * the constructor refuses the log (std::runtime_error). */
 class CarmenLogReader
 {
  public:
   using WarningSink = std::function<void(const std::string&)>;
   CarmenLogReader(const std::string& path, const CarmenParams& params, WarningSink warn = {});
 
-  /** Next converted observation; false at the end of the file. */
+  /** Next converted observation; false at the end of the file. Throws GzipError naming the
+   * file and the last line read if its gzip stream is cut short or corrupt (the records
+   * returned before are the file's lines up to there). */
   bool next(CarmenRecord& record);
   const CarmenStats& stats() const { return stats_; }
   /** Fraction of the file read so far, in [0, 1] (for progress and ETA). */
@@ -90,12 +100,16 @@ class CarmenLogReader
   void warn(size_t& printed, const std::string& msg);
   void addParam(const std::string& name, const std::string& value);
   double stampOf(const std::string& stream, double raw, size_t line);
+  /** A logged stamp of size below 2200-01-01 in seconds (a negative one is shifted later). */
+  static bool stampInRange(double raw);
+  /** True if the line's stamp is in range; else counts and reports the skipped line. */
+  bool keepStamp(const std::string& stream, double raw);
   void convertLaser(const CarmenLaser& laser, CarmenRecord& record);
 
   std::string path_;
   CarmenParams params_;
   WarningSink warn_;
-  mrpt::io::CFileGZInputStream file_;
+  std::unique_ptr<GzipFile> file_;
   ReadProgress progress_;
   std::string buffer_;
   size_t buffer_pos_ = 0;

@@ -5,6 +5,7 @@
 #include <swslam/io/scan_source.h>
 #include <swslam/sensor/scan.h>
 
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "test_support.h"
@@ -378,4 +380,156 @@ TEST(CarmenLog, BadInputGivesClearErrors)
     EXPECT_NE(std::string(e.what()).find("no laser scan"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(opts.output));
+}
+
+namespace
+{
+/** A log of `n` FLASER scans 0.1 s apart from `t0`, one ODOM line before each, gzip-compressed
+ * (zlib writes it) at `path`. */
+void writeGzipLog(const std::string& path, int n, double t0 = 1000)
+{
+  std::ostringstream text;
+  for (int k = 0; k < n; k++)
+  {
+    const std::string t = std::to_string(t0 + 0.1 * k);
+    text << "ODOM " << 0.1 * k << " 0 0 0.1 0 0 " << t << " h " << t << "\n"
+         << laserLine("FLASER", ranges180({}), std::to_string(0.1 * k) + " 0 0", t) << "\n";
+  }
+  mrpt::io::CFileGZOutputStream out(path);
+  const std::string s = text.str();
+  out.Write(s.data(), s.size());
+}
+
+std::string fileBytes(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+/** Converts `input` to `dir`/out.rawlog: the stats, or the exception's message. */
+std::pair<swslam::io::CarmenStats, std::string> convertFile(const std::string& input, const std::string& dir)
+{
+  swslam::io::Carmen2RawlogOptions opts;
+  opts.input = input;
+  opts.output = dir + "/out.rawlog";
+  opts.ground_truth = dir + "/gt.tum";
+  try
+  {
+    return {swslam::io::carmen2rawlog(opts, [](const std::string&) {}), ""};
+  }
+  catch (const std::exception& e)
+  {
+    return {{}, e.what()};
+  }
+}
+
+size_t rawlogScans(const std::string& path)
+{
+  swslam::io::RawlogReader reader(path);
+  swslam::io::RawlogItem item;
+  size_t n = 0;
+  while (reader.next(item)) n += std::dynamic_pointer_cast<CObservation2DRangeScan>(item.observation) ? 1 : 0;
+  return n;
+}
+}  // namespace
+
+TEST(CarmenLog, ATruncatedGzipLogConvertsTheScansBeforeTheCutAndSaysWhere)
+{
+  // It converted about half the scans with no word, as if the log ended there.
+  const auto dir = swslam::test::tempDir("carmen_gzcut");
+  const std::string full = dir + "/full.log.gz", cut = dir + "/cut.log.gz";
+  writeGzipLog(full, 240);
+  const std::string bytes = fileBytes(full);
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+
+  const auto [stats, error] = convertFile(cut, dir);
+  ASSERT_EQ(error, "");
+  EXPECT_GT(stats.scans(), 60u);
+  EXPECT_LT(stats.scans(), 240u);
+  EXPECT_NE(stats.damage.find("the gzip stream is cut short after"), std::string::npos) << stats.damage;
+  EXPECT_NE(stats.damage.find("'" + cut + "'"), std::string::npos) << stats.damage;
+  // An ODOM and a FLASER line per scan: the last line read is the last scan's or the ODOM after it.
+  EXPECT_TRUE(stats.damage.find(", after line " + std::to_string(2 * stats.scans())) != std::string::npos ||
+              stats.damage.find(", after line " + std::to_string(2 * stats.scans() + 1)) != std::string::npos)
+      << stats.damage;
+  EXPECT_NE(swslam::io::formatCarmenStats(stats).find("input damaged, converted up to there: "), std::string::npos);
+  EXPECT_EQ(rawlogScans(dir + "/out.rawlog"), stats.scans());
+  EXPECT_EQ(swslam::common::readTum(dir + "/gt.tum").size(), stats.scans());
+
+  // Read directly (as swslam does), the cut is an error after the scans before it.
+  swslam::io::CarmenLogReader reader(cut, swslam::io::CarmenParams(), [](const std::string&) {});
+  swslam::io::CarmenRecord rec;
+  size_t scans = 0;
+  try
+  {
+    while (reader.next(rec)) scans += std::dynamic_pointer_cast<CObservation2DRangeScan>(rec.observation) ? 1 : 0;
+    ADD_FAILURE() << "the cut log ended cleanly";
+  }
+  catch (const swslam::io::GzipError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("cut short"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(scans, stats.scans());
+}
+
+TEST(CarmenLog, ABitFlippedGzipLogIsANamedErrorNotACrash)
+{
+  // It ended with "basic_string::_M_replace_aux": MRPT's read returned 2^64-1 bytes.
+  const auto dir = swslam::test::tempDir("carmen_gzflip");
+  const std::string full = dir + "/full.log.gz", flipped = dir + "/flipped.log.gz";
+  writeGzipLog(full, 240);
+  std::string bytes = fileBytes(full);
+  for (size_t at = bytes.size() / 2; at < bytes.size() / 2 + 8; at++) bytes[at] = static_cast<char>(bytes[at] ^ 0x5A);
+  std::ofstream(flipped, std::ios::binary) << bytes;
+
+  const auto [stats, error] = convertFile(flipped, dir);
+  ASSERT_EQ(error, "");
+  EXPECT_LT(stats.scans(), 240u);
+  EXPECT_NE(stats.damage.find("corrupt gzip data after"), std::string::npos) << stats.damage;
+  EXPECT_NE(stats.damage.find("(zlib: "), std::string::npos) << stats.damage;
+}
+
+TEST(CarmenLog, ALineWithATimestampOutOfRangeIsSkippedAndCounted)
+{
+  // One stamp of -1e15 shifted every other by 1e15 (beyond MRPT's clock: written as 0).
+  const auto dir = swslam::test::tempDir("carmen_stamp_range");
+  std::string text;
+  for (int k = 0; k < 10; k++)
+    text += laserLine("FLASER", ranges180({}), "0 0 0", k == 4 ? "-1e15" : std::to_string(1000 + 0.1 * k)) + "\n";
+  text += "ODOM 0 0 0 0 0 0 1e300 h 0\n";
+  const auto c = convert(writeLog(dir, text), swslam::io::CarmenParams());
+  EXPECT_EQ(c.stats.timestamp_offset, 0);
+  EXPECT_EQ(c.stats.timestamps.at("FLASER").out_of_range, 1u);
+  EXPECT_EQ(c.stats.timestamps.at("ODOM").out_of_range, 1u);
+  const auto scans = scansOf(c);
+  ASSERT_EQ(scans.size(), 9u);
+  EXPECT_NEAR(toSec(scans[4]->timestamp), 1000.5, 1e-6);
+  EXPECT_EQ(c.records.size(), 9u);  // the ODOM line too
+  ASSERT_FALSE(c.warnings.empty());
+  EXPECT_NE(c.warnings[0].find(":5: FLASER timestamp -1e+15 s is out of range"), std::string::npos) << c.warnings[0];
+  const std::string summary = swslam::io::formatCarmenStats(c.stats);
+  EXPECT_NE(summary.find("FLASER: 9 stamps, 0 non-increasing, 0 forward jumps, 1 out of range (lines skipped)"),
+            std::string::npos)
+      << summary;
+}
+
+TEST(CarmenLog, ALogInMicrosecondsIsRefusedSayingSo)
+{
+  const auto dir = swslam::test::tempDir("carmen_stamp_us");
+  std::string text;
+  for (int k = 0; k < 10; k++)
+    text += laserLine("FLASER", ranges180({}), "0 0 0", std::to_string(1700000000000000LL + 100000LL * k)) + "\n";
+  const auto path = writeLog(dir, text);
+  try
+  {
+    swslam::io::CarmenLogReader reader(path, swslam::io::CarmenParams(), [](const std::string&) {});
+    ADD_FAILURE() << "a log in microseconds was accepted";
+  }
+  catch (const std::runtime_error& e)
+  {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("10 of 10 timestamps are out of range"), std::string::npos) << what;
+    EXPECT_NE(what.find("(microseconds rather than seconds?)"), std::string::npos) << what;
+    EXPECT_NE(what.find("not converted"), std::string::npos) << what;
+  }
 }

@@ -1,11 +1,15 @@
 #include <swslam/io/rawlog_reader.h>
 
+#include <swslam/io/gzip_file.h>
+#include <swslam/io/read_progress.h>
+
 #include <algorithm>
 #include <cstring>
 #include <optional>
 #include <sstream>
 
 #include <mrpt/core/exceptions.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
@@ -59,23 +63,23 @@ std::optional<uint32_t> scanRayCount(const std::string& head)
   return uint32_t(u8(kRayCountAt)) | uint32_t(u8(kRayCountAt + 1)) << 8 |
          uint32_t(u8(kRayCountAt + 2)) << 16 | uint32_t(u8(kRayCountAt + 3)) << 24;  // little-endian
 }
-}  // namespace
 
 /** The archive the reader parses: the file with a look-ahead, so that an entry's start can be
  * checked before MRPT reads it. */
-class RawlogReader::LookaheadArchive : public mrpt::serialization::CArchive
+class LookaheadArchive : public mrpt::serialization::CArchive
 {
  public:
-  explicit LookaheadArchive(mrpt::io::CFileGZInputStream& in) : in_(in) {}
+  explicit LookaheadArchive(GzipFile& in) : in_(in) {}
   /** The next `n` bytes of the file (fewer at its end), not consumed. */
   const std::string& peek(size_t n)
   {
     char buf[256];
     while (ahead_.size() < n)
     {
-      const size_t got = in_.Read(buf, std::min(sizeof(buf), n - ahead_.size()));
-      if (got == 0) break;
+      const size_t ask = std::min(sizeof(buf), n - ahead_.size());
+      const size_t got = in_.read(buf, ask);
       ahead_.append(buf, got);
+      if (got < ask) break;  // the end (or damage, which the next read reports after this data)
     }
     return ahead_;
   }
@@ -87,77 +91,120 @@ class RawlogReader::LookaheadArchive : public mrpt::serialization::CArchive
     const size_t from_ahead = std::min(len, ahead_.size());
     std::memcpy(buf, ahead_.data(), from_ahead);
     ahead_.erase(0, from_ahead);
-    return from_ahead + (from_ahead < len ? in_.Read(static_cast<char*>(buf) + from_ahead, len - from_ahead) : 0);
+    return from_ahead + (from_ahead < len ? in_.read(static_cast<char*>(buf) + from_ahead, len - from_ahead) : 0);
   }
 
  private:
-  mrpt::io::CFileGZInputStream& in_;
+  GzipFile& in_;
   std::string ahead_;
 };
 
-RawlogReader::RawlogReader(const std::string& path) : path_(path), progress_(path)
+/** The child's work: decodes the rawlog's entries with MRPT and sends each item
+ * re-serialized, an entry's position marked before MRPT reads it. */
+void decodeRawlog(const std::string& path, DecodeChannel& channel)
 {
-  bool opened = false;
+  using namespace mrpt::obs;
+  GzipFile file(path);
+  const ReadProgress progress(path);
+  LookaheadArchive archive(file);
+  mrpt::io::CMemoryStream buffer;
+  auto send = [&](const mrpt::serialization::CSerializable& item) {
+    buffer.clear();
+    mrpt::serialization::archiveFrom(buffer) << item;
+    channel.send(progress.fraction(file.position()),
+                 std::string(static_cast<const char*>(buffer.getRawBufferData()), buffer.getTotalBytesCount()));
+  };
+  for (uint64_t entry = 0;; entry++)
+  {
+    const std::string& head = archive.peek(kRayCountAt + 4);
+    channel.mark({entry, file.position() - head.size()});
+    if (head.empty()) return;  // the clean end of the file
+    if (const auto rays = scanRayCount(head); rays && *rays > kMaxScanRays)
+      throw std::runtime_error("a scan of " + std::to_string(*rays) + " rays (more than " +
+                               std::to_string(kMaxScanRays) + ": a corrupt count)");
+    mrpt::serialization::CSerializable::Ptr obj;
+    try
+    {
+      archive >> obj;
+    }
+    catch (const std::exception& e)
+    {
+      throw std::runtime_error(mrptMessages(e));
+    }
+    if (!obj) continue;
+    if (auto obs = std::dynamic_pointer_cast<CObservation>(obj))
+    {
+      send(*obs);
+    }
+    else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
+    {
+      for (const auto& o : *sf)
+        if (o) send(*o);
+    }
+    else if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj))
+    {
+      if (auto mv = acts->getBestMovementEstimation()) send(*mv);
+    }
+    // Other object kinds (maps, poses...) are not part of the input stream: skipped.
+  }
+}
+}  // namespace
+
+RawlogReader::RawlogReader(const std::string& path) : path_(path)
+{
   try
   {
-    opened = file_.open(path);
+    GzipFile probe(path);  // here, so that the constructor says it
   }
   catch (const std::exception&)
   {
+    throw std::runtime_error("rawlog: cannot open '" + path + "'");
   }
-  if (!opened) throw std::runtime_error("rawlog: cannot open '" + path + "'");
-  archive_ = std::make_unique<LookaheadArchive>(file_);
+  decoder_ = std::make_unique<SandboxedDecoder>([path](DecodeChannel& channel) { decodeRawlog(path, channel); });
 }
 
 RawlogReader::~RawlogReader() = default;
 
 bool RawlogReader::next(RawlogItem& item)
 {
-  using namespace mrpt::obs;
-  while (pending_.empty())
+  auto corrupt = [&](DecodePosition at, const std::string& why) {
+    return RawlogError("rawlog '" + path_ + "': corrupt or truncated entry #" + std::to_string(at.index) +
+                           " (at byte " + std::to_string(at.offset) + "): " + why,
+                       at.index);
+  };
+  try
   {
-    const std::string& head = archive_->peek(kRayCountAt + 4);
-    if (head.empty()) return false;  // the clean end of the file
-    const uint64_t pos_before = file_.getPosition() - head.size();
-    auto corrupt = [&](const std::string& why) {
-      return RawlogError("rawlog '" + path_ + "': corrupt or truncated entry #" + std::to_string(entries_) +
-                             " (at byte " + std::to_string(pos_before) + "): " + why,
-                         entries_);
-    };
-    if (const auto rays = scanRayCount(head); rays && *rays > kMaxScanRays)
-      throw corrupt("a scan of " + std::to_string(*rays) + " rays (more than " + std::to_string(kMaxScanRays) +
-                    ": a corrupt count)");
-    mrpt::serialization::CSerializable::Ptr obj;
-    try
+    if (!decoder_->next(frame_))
     {
-      *archive_ >> obj;
+      entries_ = frame_.at.index;
+      fraction_ = 1;
+      return false;
     }
-    catch (const std::exception& e)
-    {
-      throw corrupt(mrptMessages(e));
-    }
-    entries_++;
-    if (!obj) continue;
-    if (auto obs = std::dynamic_pointer_cast<CObservation>(obj))
-    {
-      pending_.push_back({obs, nullptr});
-    }
-    else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
-    {
-      for (const auto& o : *sf) pending_.push_back({o, nullptr});
-    }
-    else if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj))
-    {
-      if (auto mv = acts->getBestMovementEstimation())
-        pending_.push_back({nullptr, std::make_shared<CActionRobotMovement2D>(*mv)});
-    }
-    // Other object kinds (maps, poses...) are not part of the input stream: skipped.
   }
-  item = std::move(pending_.front());
-  pending_.pop_front();
+  catch (const DecodeFailure& f)
+  {
+    throw corrupt(f.at(), f.what());
+  }
+  entries_ = frame_.at.index + 1;
+  fraction_ = frame_.fraction;
+  mrpt::serialization::CSerializable::Ptr obj;
+  try
+  {
+    mrpt::io::CMemoryStream in;
+    in.assignMemoryNotOwn(frame_.payload.data(), frame_.payload.size());
+    mrpt::serialization::archiveFrom(in) >> obj;
+  }
+  catch (const std::exception& e)
+  {
+    throw corrupt(frame_.at, "its decoded item could not be read back: " + mrptMessages(e));
+  }
+  item.observation = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj);
+  item.odometry_increment = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(obj);
+  if (!item.observation && !item.odometry_increment)
+    throw corrupt(frame_.at, "its decoded item is neither an observation nor an odometry increment");
   return true;
 }
 
-double RawlogReader::fractionRead() const { return progress_.fraction(file_.getPosition()); }
+double RawlogReader::fractionRead() const { return fraction_; }
 
 }  // namespace swslam::io

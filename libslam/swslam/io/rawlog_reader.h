@@ -1,22 +1,22 @@
 #pragma once
 // Streaming reader of MRPT rawlogs in both formats (observation-only, and
 // action/sensory-frame pairs). Reads one entry at a time; never loads the whole file.
+//
+// MRPT's deserializers trust every count and length in the file: a damaged entry crashed
+// them or made them allocate tens of gigabytes. So the entries are decoded in a child process
+// (io/sandboxed_decoder.h) under a memory budget (kDecoderMemoryBudget), which sends each item
+// re-serialized; a crash, an exhausted budget or a stall (kDecoderStallTimeout) there is a
+// RawlogError here, naming the entry.
+// Construct readers before the process starts threads (the child is a fork).
 
-#include <swslam/io/read_progress.h>
+#include <swslam/io/sandboxed_decoder.h>
 
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation.h>
 
-#include <deque>
 #include <memory>
 #include <stdexcept>
 #include <string>
-
-namespace mrpt::serialization
-{
-class CArchive;
-}
 
 namespace swslam::io
 {
@@ -43,13 +43,16 @@ struct RawlogItem
 class RawlogReader
 {
  public:
-  /** Opens a rawlog (plain or gzip). Throws std::runtime_error if it cannot be opened. */
+  /** Opens a rawlog (plain or gzip) and starts its decoder process. Throws
+   * std::runtime_error if it cannot be opened. */
   explicit RawlogReader(const std::string& path);
   ~RawlogReader();
 
   /** Reads the next item. Returns false at the clean end of the file.
-   * Throws RawlogError (with the entry index) on corrupt or truncated data, and on a scan
-   * entry whose ray count is above 2^20 (checked before MRPT allocates for it). */
+   * Throws RawlogError (with the entry index and byte offset in its message) on corrupt or
+   * truncated data, on a scan entry whose ray count is above 2^20 (checked before MRPT
+   * allocates for it), on an entry that crashes MRPT's decoder or needs more than the
+   * decoder's memory budget; and again on every call after that. */
   bool next(RawlogItem& item);
 
   /** Number of top-level rawlog entries read so far. */
@@ -60,12 +63,10 @@ class RawlogReader
 
  private:
   std::string path_;
-  mrpt::io::CFileGZInputStream file_;
-  ReadProgress progress_;
-  class LookaheadArchive;
-  std::unique_ptr<LookaheadArchive> archive_;
-  std::deque<RawlogItem> pending_;  ///< items of an already-read sensory frame / action set
+  std::unique_ptr<SandboxedDecoder> decoder_;
+  DecodedFrame frame_;  ///< the last frame read (its buffer is reused)
   size_t entries_ = 0;
+  double fraction_ = 0;
 };
 
 }  // namespace swslam::io

@@ -10,11 +10,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
+#include <iostream>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iterator>
 #include <optional>
 #include <random>
+#include <sys/resource.h>
+#include <sys/wait.h>
 
 #include "test_support.h"
 
@@ -227,4 +233,221 @@ TEST(RawlogReader, AScanWithAHugeRayCountIsAnErrorBeforeAnyAllocation)
     EXPECT_EQ(read, 4u);
     EXPECT_NE(std::string(e.what()).find("a scan of 200000000 rays"), std::string::npos) << e.what();
   }
+}
+
+namespace
+{
+/** An action/sensory-frame rawlog of `n` pairs (plain), its scans labelled "FRONT_LASER";
+ * returns each entry's byte offset. */
+std::vector<uint64_t> writeActionFrameRawlog(const std::string& path, int n)
+{
+  std::vector<uint64_t> offsets;
+  mrpt::io::CFileOutputStream f(path);
+  auto arch = mrpt::serialization::archiveFrom(f);
+  for (int k = 0; k < n; k++)
+  {
+    mrpt::obs::CActionCollection acts;
+    mrpt::obs::CActionRobotMovement2D mv;
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opts;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0.01), opts);
+    acts.insert(mv);
+    offsets.push_back(f.getPosition());
+    arch << acts;
+    mrpt::obs::CSensoryFrame sf;
+    auto scan = makeScan(k);
+    scan->sensorLabel = "FRONT_LASER";
+    sf.insert(scan);
+    offsets.push_back(f.getPosition());
+    arch << sf;
+  }
+  return offsets;
+}
+
+std::string readBytes(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+/** Writes `value` (little-endian) over the 4 bytes at `at`. */
+void overwriteU32(std::string& bytes, size_t at, uint32_t value)
+{
+  for (int b = 0; b < 4; b++) bytes[at + b] = static_cast<char>(value >> (8 * b));
+}
+
+/** Where the serialized object of class `name` that starts at or after `from` begins (its
+ * class tag), and where its fields begin (after the name and the version byte). */
+std::pair<size_t, size_t> objectAt(const std::string& bytes, const std::string& name, size_t from)
+{
+  const size_t at = bytes.find(name, from);
+  if (at == std::string::npos) throw std::logic_error("no " + name + " in the rawlog: the layout changed");
+  return {at - 1, at + name.size() + 1};
+}
+
+struct DamagedRawlog
+{
+  std::string path;
+  std::vector<uint64_t> offsets;  ///< of its entries
+};
+
+/** The action/sensory-frame rawlog of 4 pairs, `value` written over the 4 bytes at
+ * `field_at(its bytes, its entries' offsets)`. */
+DamagedRawlog damagedRawlog(
+    const std::string& name, uint32_t value,
+    const std::function<size_t(const std::string&, const std::vector<uint64_t>&)>& field_at)
+{
+  DamagedRawlog r{test::tempDir("rawlog_damage") + "/" + name + ".rawlog", {}};
+  r.offsets = writeActionFrameRawlog(r.path, 4);
+  std::string bytes = readBytes(r.path);
+  overwriteU32(bytes, field_at(bytes, r.offsets), value);
+  std::ofstream(r.path, std::ios::binary) << bytes;
+  return r;
+}
+
+const std::string kOverBudget = "needed more than 1 GB of memory";
+
+struct DamagedRead
+{
+  size_t items = 0;
+  std::optional<RawlogError> error;
+  double seconds = 0;
+};
+
+DamagedRead readDamaged(const std::string& path)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto [read, error] = readAll(path);
+  return {read, error, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+}
+
+/** The damaged rawlog gives a RawlogError at entry `entry` (offset `offset`) after the `items`
+ * good ones, quickly and with bounded memory, saying `why`. */
+void expectDamageAt(const DamagedRead& r, size_t items, size_t entry, uint64_t offset,
+                    const std::vector<std::string>& whys)
+{
+  ASSERT_TRUE(r.error) << "the damage went unnoticed";
+  const std::string what = r.error->what();
+  EXPECT_EQ(r.items, items) << what;
+  EXPECT_EQ(r.error->entry(), entry) << what;
+  EXPECT_NE(what.find("entry #" + std::to_string(entry) + " (at byte " + std::to_string(offset) + ")"),
+            std::string::npos)
+      << what;
+  EXPECT_TRUE(std::any_of(whys.begin(), whys.end(), [&](const std::string& why) { return what.find(why) != std::string::npos; }))
+      << what;
+  EXPECT_LT(r.seconds, 5.0) << what;  // a bound, not a benchmark: 0.5 s at most when measured
+  rusage self{}, children{};
+  getrusage(RUSAGE_SELF, &self);
+  getrusage(RUSAGE_CHILDREN, &children);
+  EXPECT_LT(self.ru_maxrss, 1 << 20) << "the test process grew past 1 GB (KB: " << self.ru_maxrss << ")";
+  EXPECT_LT(children.ru_maxrss, 1 << 20) << "a decoder grew past 1 GB (KB: " << children.ru_maxrss << ")";
+  std::cerr << "read in " << r.seconds << " s, decoder's peak " << children.ru_maxrss / 1024 << " MB: " << what << "\n";
+}
+}  // namespace
+
+// Damage MRPT trusted: each count or length below made it allocate gigabytes (or crash). The
+// decoder's child process reaches its memory budget instead, and the entry is named.
+TEST(RawlogReader, ADamagedActionCountIsAnErrorNamingTheEntry)
+{
+  const auto r = damagedRawlog("actions", 0xFFFFFFFFu, [](const std::string& bytes, const auto& offsets) {
+    return objectAt(bytes, "mrpt::obs::CActionCollection", offsets[4]).second;  // the number of actions
+  });
+  // Before it: 2 actions and 2 scans.
+  expectDamageAt(readDamaged(r.path), 4, 4, r.offsets[4], {kOverBudget});
+}
+
+TEST(RawlogReader, ADamagedObservationCountOfASensoryFrameIsAnErrorNamingTheEntry)
+{
+  const auto r = damagedRawlog("frames", 0x7FFFFFFFu, [](const std::string& bytes, const auto& offsets) {
+    return objectAt(bytes, "mrpt::obs::CSensoryFrame", offsets[5]).second;  // the number of observations
+  });
+  expectDamageAt(readDamaged(r.path), 5, 5, r.offsets[5], {kOverBudget});
+}
+
+TEST(RawlogReader, ADamagedLabelLengthIsAnErrorNamingTheEntry)
+{
+  const auto r = damagedRawlog("label", 0xF0000000u, [](const std::string& bytes, const auto& offsets) {
+    const size_t label = bytes.find("FRONT_LASER", offsets[5]);
+    if (label > offsets[6] || bytes[label - 4] != 11) throw std::logic_error("the label's length field moved");
+    return label - 4;
+  });
+  expectDamageAt(readDamaged(r.path), 5, 5, r.offsets[5], {kOverBudget});
+}
+
+TEST(RawlogReader, ADamagedRayCountInsideASensoryFrameIsAnErrorNamingTheEntry)
+{
+  // The check of a top-level scan's ray count does not see into a sensory frame.
+  const auto r = damagedRawlog("rays", 0xFFFFFFF0u, [](const std::string& bytes, const auto& offsets) {
+    const size_t count_at = objectAt(bytes, "mrpt::obs::CObservation2DRangeScan", offsets[5]).first + 164;
+    if (count_at > offsets[6] || (static_cast<uint32_t>(bytes[count_at] & 0xff) | (bytes[count_at + 1] & 0xff) << 8) != 181)
+      throw std::logic_error("the scan's layout changed");
+    return count_at;
+  });
+  expectDamageAt(readDamaged(r.path), 5, 5, r.offsets[5], {kOverBudget, "the decoder crashed with SIG"});
+}
+
+TEST(RawlogReader, AnActionEntryThatCrashesMrptIsAnErrorNamingTheEntry)
+{
+  // tests/data/crashing_action.rawlog (291 bytes): a CObservationOdometry (entry 0, 103 bytes),
+  // then a CActionCollection written by MRPT 2.5 with one byte changed from 0 to 1: byte 69 of
+  // the entry, the first field of its CActionRobotMovement2D (after its version byte 7). Found
+  // by flipping each byte of the entry: any value 1-255 in bytes 69-72 makes MRPT's
+  // CActionRobotMovement2D::serializeFrom die with SIGSEGV.
+  constexpr uint64_t kCrashingActionOffset = 103;
+  const std::string path = std::string(SWSLAM_SOURCE_DIR) + "/tests/data/crashing_action.rawlog";
+  const auto r = readDamaged(path);
+  expectDamageAt(r, 1, 1, kCrashingActionOffset, {"the decoder crashed with SIGSEGV"});
+}
+
+TEST(RawlogReader, EverythingReturnedBeforeTheDamageStaysValid)
+{
+  const std::string path = damagedRawlog("valid", 0x7FFFFFFFu, [](const std::string& bytes, const auto& offsets) {
+                             return objectAt(bytes, "mrpt::obs::CSensoryFrame", offsets[5]).second;
+                           }).path;
+  std::vector<RawlogItem> items;
+  {
+    RawlogReader r(path);
+    RawlogItem item;
+    EXPECT_THROW(
+        while (r.next(item)) items.push_back(item), RawlogError);
+    EXPECT_THROW(r.next(item), RawlogError) << "the reader goes on failing";
+  }
+  ASSERT_EQ(items.size(), 5u);
+  for (int k = 0; k < 2; k++)
+  {
+    ASSERT_TRUE(items[2 * k].odometry_increment);
+    EXPECT_NEAR(items[2 * k].odometry_increment->poseChange->getMeanVal().x(), 0.1, 1e-12);
+    auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(items[2 * k + 1].observation);
+    ASSERT_TRUE(scan);
+    EXPECT_EQ(scan->sensorLabel, "FRONT_LASER");
+    EXPECT_EQ(scan->getScanSize(), 181u);
+    EXPECT_EQ(scan->timestamp, makeScan(k)->timestamp);
+  }
+}
+
+TEST(RawlogReader, AReaderDestroyedEarlyLeavesNoProcess)
+{
+  const auto path = test::tempDir("rawlog_early") + "/a.rawlog";
+  writeObservationRawlog(path, 200, false);
+  {
+    RawlogReader r(path);
+    RawlogItem item;
+    ASSERT_TRUE(r.next(item));
+  }
+  errno = 0;
+  EXPECT_TRUE(waitpid(-1, nullptr, WNOHANG) < 0 && errno == ECHILD);
+}
+
+TEST(RawlogReader, ACutGzipStreamIsAnErrorEvenAtAnEntryBoundary)
+{
+  // A .gz cut short used to look like the clean end if the cut fell between entries.
+  const auto dir = test::tempDir("rawlog_gzcut");
+  const auto path = dir + "/a.rawlog";
+  writeObservationRawlog(path, 40, true);
+  std::string bytes = readBytes(path);
+  bytes.resize(bytes.size() - 6);  // the trailer: every entry is there, but the stream is cut
+  std::ofstream(path, std::ios::binary) << bytes;
+  const auto [read, error] = readAll(path);
+  ASSERT_TRUE(error) << "a truncated gzip rawlog must not look like a clean end";
+  EXPECT_EQ(read, 80u);
+  EXPECT_NE(std::string(error->what()).find("the gzip stream is cut short"), std::string::npos) << error->what();
 }

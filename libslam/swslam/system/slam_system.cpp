@@ -1,5 +1,6 @@
 #include <swslam/system/slam_system.h>
 
+#include <swslam/common/unix_time.h>
 #include <swslam/sensor/scan.h>
 
 #include <mrpt/system/os.h>
@@ -53,6 +54,12 @@ FeedResult SlamSystem::feed(sensor::ScanInput input)
   };
   if (!input.observation) return skip(FeedStatus::BadGeometry, "no observation");
   const double t = mrpt::Clock::toDouble(input.observation->timestamp);
+  if (!common::plausibleUnixTime(t))
+  {
+    char buf[120];
+    std::snprintf(buf, sizeof(buf), "timestamp %.6g s is outside 1970-2200", t);
+    return skip(FeedStatus::TimestampOutOfRange, buf + common::timeUnitHint(t));
+  }
   FeedResult result;
   if (!std::isfinite(t) || t <= last_timestamp_)
   {

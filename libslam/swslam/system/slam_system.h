@@ -43,6 +43,7 @@ enum class FeedStatus
 {
   Accepted,
   TimestampNotIncreasing,  ///< backwards or duplicated: skipped
+  TimestampOutOfRange,     ///< not in 1970-2200 (common/unix_time.h), e.g. in microseconds: skipped
   BadGeometry,             ///< too few beams, aperture, max range or sensor pose unusable: skipped
   OdometryDropped,         ///< taken, without its odometry increment (not finite, or too long)
   TimestampsResumed,       ///< taken: the scans behind a stamp that jumped forward resume the log

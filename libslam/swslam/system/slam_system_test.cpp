@@ -186,6 +186,26 @@ TEST(SlamSystem, AStampThatJumpedForwardDoesNotEndTheRun)
   }
 }
 
+TEST(SlamSystem, AScanStampedOutside1970To2200IsSkippedWithAReason)
+{
+  SlamSystem slam(defaultParams(), RunMode::Deterministic);
+  test::World world = test::roomWorld();
+  std::mt19937 rng(3);
+  ASSERT_TRUE(slam.feed({scanAt(world, CPose2D(0, 0, 0), 1.7e9, rng), {}}).ok());
+  // Milliseconds; and -1 s, which MRPT's clock wraps to 1.8e12 s.
+  for (double t : {1.7e12, -1.0})
+  {
+    const FeedResult r = slam.feed({scanAt(world, CPose2D(0.05, 0, 0), t, rng), {}});
+    EXPECT_EQ(r.status, FeedStatus::TimestampOutOfRange) << t;
+    EXPECT_NE(r.message.find("is outside 1970-2200"), std::string::npos) << r.message;
+  }
+  EXPECT_EQ(slam.feed({scanAt(world, CPose2D(0.05, 0, 0), 1.7e12, rng), {}}).message,
+            "timestamp 1.7e+12 s is outside 1970-2200 (milliseconds rather than seconds?)");
+  // The scans after it are judged against the last good one.
+  EXPECT_TRUE(slam.feed({scanAt(world, CPose2D(0.1, 0, 0), 1.7e9 + 0.1, rng), {}}).ok());
+  EXPECT_EQ(slam.status().skipped, 3u);
+}
+
 TEST(SlamSystem, BackwardDuplicateAndMalformedScansAreSkippedWithAReason)
 {
   SlamSystem slam(defaultParams(), RunMode::Deterministic);
