@@ -8,11 +8,13 @@
 
 #include <swslam/bench/false_loops.h>
 #include <swslam/bench/graph.h>
+#include <swslam/graph/io.h>
 #include <swslam/graph/synthetic.h>
 #include <swslam/system/config.h>
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 int main(int argc, char** argv)
 {
@@ -52,6 +54,13 @@ int main(int argc, char** argv)
 #endif
       swslam::bench::falseLoopCases("grid-" + std::to_string(o.nodes), s.graph, false_loops.getValue(), methods,
                                     stdout);
+      // A public graph too: MRPT's circle of 50 nodes, from its own initial guess.
+      const std::string circle = datasets.getValue() + "/graph_2d_circle_50nodes.graph";
+      if (std::ifstream(circle).good())
+        swslam::bench::falseLoopCases("mrpt-circle-50", swslam::graph::loadGraph(circle), false_loops.getValue(),
+                                      methods, stdout);
+      else
+        std::printf("(MRPT's %s not found: --mrpt-datasets)\n", circle.c_str());
       return 0;
     }
 #ifdef SWSLAM_WITH_CERES
