@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace swslam::io
@@ -22,6 +23,8 @@ constexpr const char* kTfStaticTopic = "/tf_static";
 constexpr const char* kDefaultBaseFrame = "base_link";
 /** Larger than any scan (2^20 rays with intensities: 8 MiB); a message size past it is damage. */
 constexpr uint32_t kMaxMessageBytes = 64u << 20;
+/** Messages of one time read ahead (to give the odometry first), at most. */
+constexpr size_t kMaxSameTime = 64;
 
 using LayoutCheck = std::string (*)(const std::vector<uint8_t>&);
 
@@ -191,23 +194,43 @@ void BagReader::findSensorPose()
 
 bool BagReader::next(mrpt::obs::CObservation::Ptr& out)
 {
-  if (!bag_->view) return false;
+  if (pending_.empty()) readSameTime();
+  if (pending_.empty())
+  {
+    if (deferred_error_) throw *deferred_error_;
+    return false;
+  }
+  out = pending_.front();
+  pending_.pop_front();
+  read_++;
+  return true;
+}
+
+void BagReader::readSameTime()
+{
+  if (!bag_->view || deferred_error_) return;
+  std::optional<ros::Time> time;
   try
   {
-    if (bag_->it == bag_->view->end()) return false;
-    const rosbag::MessageInstance& m = *bag_->it;
-    if (m.getTopic() == scan_topic_)
-      out = std::make_shared<mrpt::obs::CObservation2DRangeScan>(
-          scanFromRos(decode<sensor_msgs::LaserScan>(m, laserScanLayoutProblem), scan_topic_, sensor_pose_));
-    else
-      out = std::make_shared<mrpt::obs::CObservationOdometry>(
-          odometryFromRos(decode<nav_msgs::Odometry>(m, nullptr), odom_topic_));
-    ++bag_->it;
+    while (bag_->it != bag_->view->end() && pending_.size() < kMaxSameTime)
+    {
+      const rosbag::MessageInstance& m = *bag_->it;
+      if (time && m.getTime() != *time) break;
+      time = m.getTime();
+      if (m.getTopic() == scan_topic_)
+        pending_.push_back(std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+            scanFromRos(decode<sensor_msgs::LaserScan>(m, laserScanLayoutProblem), scan_topic_, sensor_pose_)));
+      else
+        pending_.push_back(std::make_shared<mrpt::obs::CObservationOdometry>(
+            odometryFromRos(decode<nav_msgs::Odometry>(m, nullptr), odom_topic_)));
+      ++bag_->it;
+    }
   }
   catch (const std::exception& e)  // ros::Exception (rosbag's, deserialization) and ours
   {
+    const size_t index = read_ + pending_.size();
     std::ostringstream where;
-    where << "bag '" << path_ << "': message #" << read_ << " of " << total_ << " cannot be read";
+    where << "bag '" << path_ << "': message #" << index << " of " << total_ << " cannot be read";
     try
     {
       const rosbag::MessageInstance& m = *bag_->it;
@@ -216,10 +239,12 @@ bool BagReader::next(mrpt::obs::CObservation::Ptr& out)
     catch (const std::exception&)
     {
     }
-    throw BagError(where.str() + ": " + e.what(), read_);
+    deferred_error_ = std::make_shared<BagError>(where.str() + ": " + e.what(), index);
   }
-  read_++;
-  return true;
+  // rosbag orders messages of one time arbitrarily; a rawlog gives the odometry first.
+  std::stable_partition(pending_.begin(), pending_.end(), [](const mrpt::obs::CObservation::Ptr& o) {
+    return std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o) != nullptr;
+  });
 }
 
 double BagReader::fractionRead() const { return total_ == 0 ? 1.0 : double(read_) / double(total_); }

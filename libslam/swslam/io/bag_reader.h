@@ -9,6 +9,7 @@
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <deque>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -53,8 +54,9 @@ class BagReader
   BagReader(const std::string& path, const BagReaderOptions& opts);
   ~BagReader();
 
-  /** The next scan or odometry reading, in time order; false at the end. Throws BagError on a
-   * message that cannot be read. */
+  /** The next scan or odometry reading, in time order (of one time, the odometry first, as in
+   * a rawlog); false at the end. Throws BagError on a message that cannot be read, once the
+   * messages before it are returned. */
   bool next(mrpt::obs::CObservation::Ptr& out);
 
   const std::string& path() const { return path_; }
@@ -73,6 +75,8 @@ class BagReader
  private:
   void chooseTopics(const BagReaderOptions& opts);
   void findSensorPose();
+  /** Reads the messages of the next time into pending_ (a read error: deferred_error_). */
+  void readSameTime();
 
   struct Bag;
   std::string path_;
@@ -81,6 +85,8 @@ class BagReader
   std::string scan_topic_, odom_topic_;
   mrpt::poses::CPose3D sensor_pose_;
   std::string sensor_pose_source_;
+  std::deque<mrpt::obs::CObservation::Ptr> pending_;
+  std::shared_ptr<BagError> deferred_error_;
   size_t read_ = 0, total_ = 0;
 };
 
