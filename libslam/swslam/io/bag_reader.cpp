@@ -254,7 +254,8 @@ std::string formatTopics(const std::vector<BagTopic>& topics)
   if (topics.empty()) return "none";
   std::string s;
   for (const BagTopic& t : topics)
-    s += (s.empty() ? "" : ", ") + t.name + " (" + t.type + ", " + std::to_string(t.messages) + " messages)";
+    s += (s.empty() ? "" : ", ") + t.name + " (" + t.type + ", " + std::to_string(t.messages) +
+         (t.messages == 1 ? " message)" : " messages)");
   return s;
 }
 
