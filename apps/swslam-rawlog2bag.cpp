@@ -20,6 +20,8 @@ int main(int argc, char** argv)
     TCLAP::ValueArg<std::string> odom_topic("", "odom-topic", "Topic of the odometry", false, "/odom", "TOPIC", cmd);
     TCLAP::ValueArg<std::string> base_frame("", "base-frame", "The vehicle's frame (odometry child frame)", false,
                                             "base_link", "FRAME", cmd);
+    TCLAP::ValueArg<std::string> compression("", "compression", "Chunk compression: none, bz2 or lz4", false, "none",
+                                             "none|bz2|lz4", cmd);
     TCLAP::SwitchArg overwrite("w", "overwrite", "Overwrite an existing output", cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
@@ -32,6 +34,7 @@ int main(int argc, char** argv)
     opts.scan_topic = scan_topic.getValue();
     opts.odom_topic = odom_topic.getValue();
     opts.base_frame = base_frame.getValue();
+    opts.compression = compression.getValue();
     const auto stats = swslam::io::rawlog2bag(opts);
     std::cout << "wrote " << opts.output << "\n" << swslam::io::formatRawlog2BagStats(stats, opts);
     return 0;

@@ -50,6 +50,14 @@ M decode(const rosbag::MessageInstance& m, LayoutCheck layout)
   return msg;
 }
 
+bool startsWithBagMagic(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  char magic[8] = {};
+  f.read(magic, 7);
+  return f.gcount() == 7 && std::string(magic) == "#ROSBAG";
+}
+
 /** The topics of `type`, by name. */
 std::vector<std::string> topicsOfType(const std::vector<BagTopic>& topics, const std::string& type)
 {
@@ -77,6 +85,8 @@ struct BagReader::Bag
 BagReader::BagReader(const std::string& path, const BagReaderOptions& opts) : path_(path), bag_(std::make_unique<Bag>())
 {
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open bag '" + path + "': no such file");
+  if (!startsWithBagMagic(path))
+    throw std::runtime_error("'" + path + "' is not a ROS bag: it does not start with \"#ROSBAG\"");
   try
   {
     bag_->file.open(path, rosbag::bagmode::Read);
@@ -263,10 +273,7 @@ bool isBagFile(const std::string& path)
 {
   const std::string ext = ".bag";
   if (path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0) return true;
-  std::ifstream f(path, std::ios::binary);
-  char magic[8] = {};
-  f.read(magic, 7);
-  return f.gcount() == 7 && std::string(magic) == "#ROSBAG";
+  return startsWithBagMagic(path);
 }
 
 }  // namespace swslam::io

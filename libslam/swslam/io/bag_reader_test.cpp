@@ -239,6 +239,7 @@ TEST(BagReader, NoOdometryTopicMeansLaserOnlyAndNoScanTopicNoScans)
   EXPECT_FALSE(source->next(in));
   EXPECT_EQ(source->noScanReason(""),
             "no sensor_msgs/LaserScan topic in it; its topics: /odom (nav_msgs/Odometry, 10 messages)");
+  EXPECT_EQ(source->describe(), "ROS bag " + path + " (no LaserScan topic)");
 }
 
 TEST(BagReader, SensorPoseFromTheStaticTransformsOfTheBaseFrame)
@@ -269,6 +270,9 @@ TEST(BagReader, ATruncatedBagIsNamed)
     EXPECT_NE(e.find("rosbag reindex"), std::string::npos) << e;
   }
   EXPECT_NE(errorOf([] { BagReader r("/nonexistent/x.bag", {}); }).find("no such file"), std::string::npos);
+  const std::string rawlog = std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog";
+  const std::string not_bag = errorOf([&] { BagReader r(rawlog, {}); });
+  EXPECT_NE(not_bag.find("is not a ROS bag: it does not start with \"#ROSBAG\""), std::string::npos) << not_bag;
 }
 
 TEST(BagReader, ADamagedMessageStopsTheReadingAfterTheGoodOnes)
@@ -316,6 +320,11 @@ TEST(BagReader, BagsAreRecognizedByNameOrContent)
   EXPECT_FALSE(isBagFile(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog"));
   auto source = openScanSource(renamed, {}, CarmenParams{});
   EXPECT_NE(source->describe().find("ROS bag"), std::string::npos);
+  const std::string disagree =
+      errorOf([&] { openScanSource(renamed, ScanSourceOptions{true, "LIDAR", "/scan", ""}, CarmenParams{}); });
+  EXPECT_NE(disagree.find("--sensor-label 'LIDAR' and --scan-topic '/scan' disagree"), std::string::npos) << disagree;
+  EXPECT_EQ(openScanSource(renamed, ScanSourceOptions{true, "/scan", "", ""}, CarmenParams{})->describe(),
+            source->describe());  // the label picks the topic
   EXPECT_THROW(openScanSource(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog",
                               ScanSourceOptions{true, "", "/scan", ""}, CarmenParams{}),
                std::runtime_error);

@@ -26,11 +26,17 @@ ros::Time stampOf(const mrpt::obs::CObservation& obs, const std::string& what)
 
 Rawlog2BagStats rawlog2bag(const Rawlog2BagOptions& opts)
 {
+  const std::map<std::string, rosbag::compression::CompressionType> compressions{
+      {"none", rosbag::compression::Uncompressed}, {"bz2", rosbag::compression::BZ2}, {"lz4", rosbag::compression::LZ4}};
+  const auto compression = compressions.find(opts.compression);
+  if (compression == compressions.end())
+    throw std::invalid_argument("rawlog2bag: unknown compression '" + opts.compression + "' (none, bz2 or lz4)");
   RawlogReader reader(opts.input);
   Rawlog2BagStats stats;
   stats.sensor_label = opts.sensor_label;
   common::writeAtomically(opts.output, [&](const std::string& tmp) {
     rosbag::Bag bag(tmp, rosbag::bagmode::Write);
+    bag.setCompression(compression->second);
     std::optional<CObservationOdometry> from_actions;  // rawlog actions integrated
     RawlogItem item;
     while (reader.next(item))

@@ -18,6 +18,7 @@ struct Rawlog2BagOptions
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";  ///< the odometry's child frame, parent of the scans' frame
   std::string sensor_label;            ///< only scans of this sensor; empty: the first one seen
+  std::string compression = "none";    ///< of the bag's chunks: none, bz2 or lz4
 };
 
 struct Rawlog2BagStats
@@ -31,7 +32,7 @@ struct Rawlog2BagStats
 
 /** Converts, writing the bag atomically. Throws std::runtime_error naming the problem if the
  * input cannot be read, holds no scan of the sensor, or a scan or reading has no timestamp
- * (nothing is written then). */
+ * (nothing is written then); std::invalid_argument for an unknown compression. */
 Rawlog2BagStats rawlog2bag(const Rawlog2BagOptions& opts);
 
 std::string formatRawlog2BagStats(const Rawlog2BagStats& stats, const Rawlog2BagOptions& opts);

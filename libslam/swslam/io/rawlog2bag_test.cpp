@@ -60,13 +60,18 @@ std::vector<sensor::ScanInput> readInputs(const std::string& path)
 }
 }  // namespace
 
-TEST(Rawlog2Bag, TheBagReadsBackAsTheRawlog)
+class Rawlog2BagCompressed : public testing::TestWithParam<std::string>
 {
-  const std::string rawlog = tempPath("in.rawlog"), bag = tempPath("out.bag");
+};
+
+TEST_P(Rawlog2BagCompressed, TheBagReadsBackAsTheRawlog)
+{
+  const std::string rawlog = tempPath("in.rawlog"), bag = tempPath("out_" + GetParam() + ".bag");
   writeRawlog(rawlog);
   Rawlog2BagOptions opts;
   opts.input = rawlog;
   opts.output = bag;
+  opts.compression = GetParam();
   const Rawlog2BagStats stats = rawlog2bag(opts);
   EXPECT_EQ(stats.sensor_label, "LIDAR");
   EXPECT_EQ(stats.scans, 20u);
@@ -97,6 +102,8 @@ TEST(Rawlog2Bag, TheBagReadsBackAsTheRawlog)
   }
 }
 
+INSTANTIATE_TEST_SUITE_P(Rawlog2Bag, Rawlog2BagCompressed, testing::Values("none", "bz2", "lz4"));
+
 TEST(Rawlog2Bag, NothingIsWrittenWithoutScans)
 {
   const std::string rawlog = tempPath("in2.rawlog"), bag = tempPath("none.bag");
@@ -108,4 +115,7 @@ TEST(Rawlog2Bag, NothingIsWrittenWithoutScans)
   opts.sensor_label = "NOPE";
   EXPECT_THROW(rawlog2bag(opts), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(bag));
+  opts.sensor_label = "";
+  opts.compression = "zip";
+  EXPECT_THROW(rawlog2bag(opts), std::invalid_argument);
 }

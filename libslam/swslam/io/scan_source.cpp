@@ -174,6 +174,7 @@ class BagSource : public SourceBase
   }
   std::string describe() const override
   {
+    if (reader_.scanTopic().empty()) return "ROS bag " + reader_.path() + " (no LaserScan topic)";
     return "ROS bag " + reader_.path() + " (scans " + reader_.scanTopic() + ", sensor pose " +
            reader_.sensorPoseSource() + ", " +
            (reader_.odomTopic().empty() ? std::string(opts_.use_odometry ? "no odometry topic: laser only"
