@@ -3,7 +3,7 @@
 # the same trajectory as the rawlog (ATE against ground truth); the bag's errors are named
 # with their exit codes: an unknown topic, topics for a rawlog, a truncated bag (1, nothing
 # written), a damaged message in the middle (2, the outputs of the scans before it).
-# swslam-regen-map reads the bag as well.
+# swslam-regen-map and swslam-eval consistency read the bag as well.
 set -uo pipefail
 src=$1 bin=$2/apps
 tmp=$(mktemp -d)
@@ -41,6 +41,13 @@ awk -v r="$ate_rawlog" -v b="$ate_bag" 'BEGIN { exit !(r != "" && b != "" && b <
 "$bin/swslam-regen-map" -r "$tmp/bag" -i "$bag" -c "$cfg" -o "$tmp/regen" --no-render > "$tmp/regen.log" 2>&1 ||
   { echo "FAIL: swslam-regen-map on the bag exited $?"; cat "$tmp/regen.log"; fail=1; }
 [[ -s $tmp/regen/map.png ]] || { echo "FAIL: regen wrote no map.png"; fail=1; }
+
+# swslam-eval consistency: the bag's scans (picked by their label, the topic) agree at the
+# trajectory's poses as the rawlog's do.
+consistency() { "$bin/swslam-eval" consistency "$tmp/bag/trajectory.tum" "$1" -c "$cfg" --stride 20 "${@:2}" 2>&1 | tail -1; }
+c_rawlog=$(consistency "$log")
+c_bag=$(consistency "$bag" --sensor-label /scan)
+[[ -n $c_bag && $c_bag == "$c_rawlog" ]] || { echo "FAIL: consistency on the bag: '$c_bag', on the rawlog: '$c_rawlog'"; fail=1; }
 
 expect() {  # expect NAME CODE TEXT: the run NAME exited CODE and said TEXT
   local name=$1 want=$2 text=$3 code=$4
