@@ -190,10 +190,18 @@ void BagReader::findSensorPose()
   if (has_tf)
   {
     rosbag::View v(bag_->file, rosbag::TopicQuery(kTfStaticTopic));
-    for (const rosbag::MessageInstance& m : v)
+    try
     {
-      const auto msg = decode<tf2_msgs::TFMessage>(m, tfMessageLayoutProblem);
-      transforms.insert(transforms.end(), msg.transforms.begin(), msg.transforms.end());
+      for (const rosbag::MessageInstance& m : v)
+      {
+        const auto msg = decode<tf2_msgs::TFMessage>(m, tfMessageLayoutProblem);
+        transforms.insert(transforms.end(), msg.transforms.begin(), msg.transforms.end());
+      }
+    }
+    catch (const std::exception& e)  // the scans can still be read
+    {
+      sensor_pose_source_ = std::string("identity (a /tf_static message cannot be read: ") + e.what() + ")";
+      return;
     }
   }
   if (poseInAncestor(transforms, scan_frame, base_frame, sensor_pose_))
@@ -227,12 +235,20 @@ void BagReader::readSameTime()
       const rosbag::MessageInstance& m = *bag_->it;
       if (time && m.getTime() != *time) break;
       time = m.getTime();
+      // A message without a header stamp (some drivers leave it zero) is stamped with its bag time.
       if (m.getTopic() == scan_topic_)
-        pending_.push_back(std::make_shared<mrpt::obs::CObservation2DRangeScan>(
-            scanFromRos(decode<sensor_msgs::LaserScan>(m, laserScanLayoutProblem), scan_topic_, sensor_pose_)));
+      {
+        auto msg = decode<sensor_msgs::LaserScan>(m, laserScanLayoutProblem);
+        if (msg.header.stamp.isZero()) msg.header.stamp = m.getTime();
+        pending_.push_back(
+            std::make_shared<mrpt::obs::CObservation2DRangeScan>(scanFromRos(msg, scan_topic_, sensor_pose_)));
+      }
       else
-        pending_.push_back(std::make_shared<mrpt::obs::CObservationOdometry>(
-            odometryFromRos(decode<nav_msgs::Odometry>(m, nullptr), odom_topic_)));
+      {
+        auto msg = decode<nav_msgs::Odometry>(m, nullptr);
+        if (msg.header.stamp.isZero()) msg.header.stamp = m.getTime();
+        pending_.push_back(std::make_shared<mrpt::obs::CObservationOdometry>(odometryFromRos(msg, odom_topic_)));
+      }
       ++bag_->it;
     }
   }

@@ -353,3 +353,21 @@ TEST(BagReader, ScanSourceTurnsOdometryIntoIncrements)
                                     "/swslam_bag_source.bag (scans /scan, sensor pose identity (no /tf_static "
                                     "transform from 'base_link' to 'laser'), odometry /odom)");
 }
+
+TEST(BagReader, AScanWithoutHeaderStampTakesItsBagTime)
+{
+  const std::string path = (std::filesystem::temp_directory_path() / "swslam_bag_unstamped.bag").string();
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Write);
+    for (int k = 0; k < 3; k++)
+    {
+      sensor_msgs::LaserScan m = scanMessage(k);
+      m.header.stamp = ros::Time();
+      bag.write("/scan", ros::Time(kT0 + 0.1 * k), m);
+    }
+  }
+  BagReader r(path, {});
+  const ReadResult got = readAll(r);
+  ASSERT_EQ(got.scans.size(), 3u);
+  EXPECT_NEAR(mrpt::Clock::toDouble(got.scans[2]->timestamp), kT0 + 0.2, 1e-6);
+}
