@@ -270,6 +270,20 @@ TEST(BagReader, ATruncatedBagIsNamed)
     EXPECT_NE(e.find("rosbag reindex"), std::string::npos) << e;
   }
   EXPECT_NE(errorOf([] { BagReader r("/nonexistent/x.bag", {}); }).find("no such file"), std::string::npos);
+  // A recording killed before it closed: the file header's index position is still 0.
+  const std::string unclosed = writeBag("unclosed", {});
+  std::fstream f(unclosed, std::ios::in | std::ios::out | std::ios::binary);
+  std::string head(4096, '\0');
+  f.read(&head[0], head.size());
+  const size_t field = head.find("index_pos=");
+  ASSERT_NE(field, std::string::npos);
+  f.clear();
+  f.seekp(field + 10);
+  f.write("\0\0\0\0\0\0\0\0", 8);
+  f.close();
+  const std::string e = errorOf([&] { BagReader r(unclosed, {}); });
+  EXPECT_NE(e.find("has no index: its recording was cut short (`rosbag reindex` rebuilds the index)"), std::string::npos)
+      << e;
   const std::string rawlog = std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog";
   const std::string not_bag = errorOf([&] { BagReader r(rawlog, {}); });
   EXPECT_NE(not_bag.find("is not a ROS bag: it does not start with \"#ROSBAG\""), std::string::npos) << not_bag;
