@@ -1,4 +1,4 @@
-// swslam: sliding-window 2D LiDAR SLAM on a rawlog or CARMEN log (see README and doc/system.md).
+// swslam: sliding-window 2D LiDAR SLAM on a rawlog, CARMEN log or ROS 1 bag (see README and doc/system.md).
 #include "cli.h"
 
 #include <swslam/app/offline_run.h>
@@ -10,7 +10,7 @@ int main(int argc, char** argv)
   TCLAP::CmdLine cmd("swslam: robust sliding-window 2D LiDAR SLAM (offline replay)", ' ', "0.1");
   TCLAP::ValueArg<std::string> config("c", "config", "Configuration (.ini; default: the installed config/default.ini)",
                                       false, "", "INI", cmd);
-  TCLAP::ValueArg<std::string> input("i", "input", "MRPT rawlog, or CARMEN log (.log, .log.gz, .clf)",
+  TCLAP::ValueArg<std::string> input("i", "input", "MRPT rawlog, CARMEN log (.log, .log.gz, .clf) or ROS 1 bag (.bag)",
                                      true, "", "LOG", cmd);
   TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created if missing)", true, "",
                                       "DIR", cmd);
@@ -18,6 +18,10 @@ int main(int argc, char** argv)
                                   "", "GT.tum", cmd);
   TCLAP::ValueArg<std::string> label("", "sensor-label", "Use only scans of this sensor", false, "",
                                      "LABEL", cmd);
+  TCLAP::ValueArg<std::string> scan_topic("", "scan-topic", "Bags: the sensor_msgs/LaserScan topic (default: the only one)",
+                                          false, "", "TOPIC", cmd);
+  TCLAP::ValueArg<std::string> odom_topic("", "odom-topic", "Bags: the nav_msgs/Odometry topic (default: the only one, if any)",
+                                          false, "", "TOPIC", cmd);
   TCLAP::ValueArg<size_t> max_scans("", "max-scans", "Stop after N scans (0: all)", false, 0, "N", cmd);
   TCLAP::ValueArg<double> rate("", "realtime-factor", "Pace the replay at this multiple of the log's rate (0: as fast as possible)",
                                false, 0, "X", cmd);
@@ -33,6 +37,8 @@ int main(int argc, char** argv)
   o.output = output.getValue();
   o.ground_truth = gt.getValue();
   o.sensor_label = label.getValue();
+  o.scan_topic = scan_topic.getValue();
+  o.odom_topic = odom_topic.getValue();
   o.max_scans = max_scans.getValue();
   o.realtime_factor = rate.getValue();
   o.deterministic = deterministic.getValue();

@@ -13,6 +13,7 @@ packages=(
   libmrpt-obs-dev libmrpt-slam-dev libmrpt-maps-dev libmrpt-graphs-dev
   libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
   mrpt-common
+  librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libmrpt-ros1bridge-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
 )

@@ -85,7 +85,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
     if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
     params = system::loadSystemParams(config);
     if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
-    source = io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label}, params.carmen);
+    source = io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label, opts.scan_topic, opts.odom_topic}, params.carmen);
     folder.emplace(opts.output);
     if (folder->staleRemoved() > 0)
       err << "swslam: removed " << folder->staleRemoved() << " temporary file(s) that a killed run left in "
@@ -143,7 +143,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   // A run that tracked no scan has nothing to write: say why instead of an empty map.
   if (slam->status().scans == 0 && !stop.requested())
   {
-    const std::string why = read == 0 ? io::noScanReason(source->stats(), opts.sensor_label)
+    const std::string why = read == 0 ? source->noScanReason(opts.sensor_label)
                                       : "none of its " + std::to_string(read) + " scans could be used (see above)";
     err << "swslam: " << source->describe() << ": " << (why.empty() ? "no scan was tracked" : why)
         << "; nothing written\n";

@@ -1,5 +1,5 @@
 #pragma once
-// The `swslam` application: replays a rawlog or CARMEN log through the SLAM system and writes
+// The `swslam` application: replays a rawlog, CARMEN log or ROS bag through the SLAM system and writes
 // every output. Lives in the library so that tests run exactly what the app runs.
 
 #include <swslam/app/exit_codes.h>
@@ -12,12 +12,14 @@ namespace swslam::app
 struct OfflineRunOptions
 {
   std::string config;        ///< .ini; empty: the installed config/default.ini (default_config.h)
-  std::string input;         ///< rawlog, or CARMEN log (.log, .log.gz, .clf)
+  std::string input;         ///< rawlog, CARMEN log (.log, .log.gz, .clf) or ROS 1 bag
   std::string output;        ///< output directory (created if missing)
   std::string ground_truth;  ///< TUM file for ATE/RPE; empty: none
   bool deterministic = false;
   bool use_odometry = true;
   std::string sensor_label;  ///< empty: the first laser in the log
+  std::string scan_topic;    ///< bags: the LaserScan topic; empty: the only one
+  std::string odom_topic;    ///< bags: the Odometry topic; empty: the only one, if any
   bool progress = true;      ///< progress bar (drawn only on a terminal)
   bool render = true;        ///< render.png
   size_t max_scans = 0;      ///< stop after this many scans; 0: all

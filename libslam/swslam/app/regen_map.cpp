@@ -17,7 +17,7 @@ mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
     throw std::runtime_error("regen-map: " + std::to_string(keyframes.size()) + " keyframes but " +
                              std::to_string(graph.nodeCount()) + " graph nodes (not the same run?)");
   map::MapBuilder builder(params);
-  auto source = io::openScanSource(log_path, io::ScanSourceOptions{false, ""}, carmen);
+  auto source = io::openScanSource(log_path, io::ScanSourceOptions{false, "", "", ""}, carmen);
   sensor::ScanInput in;
   size_t next = 0;  // keyframes are in time order: one pass over the log
   while (next < keyframes.size() && source->next(in))

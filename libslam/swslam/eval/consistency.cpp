@@ -137,7 +137,7 @@ PosedScans loadPosedScans(const std::string& log_path,
   for (const auto& t : trajectories) sorted.push_back(sortedByTime(t));
   PosedScans out;
   out.sensor_poses.resize(trajectories.size());
-  auto source = io::openScanSource(log_path, io::ScanSourceOptions{false, sensor_label}, carmen);
+  auto source = io::openScanSource(log_path, io::ScanSourceOptions{false, sensor_label, "", ""}, carmen);
   sensor::ScanInput in;
   size_t associated = 0;
   std::vector<CPose2D> poses(trajectories.size());

@@ -156,7 +156,60 @@ class CarmenSource : public SourceBase
   CarmenLogReader reader_;
 };
 
+/** A ROS bag: the scans of one LaserScan topic (their label) and the odometry of one topic. */
+class BagSource : public SourceBase
+{
+ public:
+  BagSource(const std::string& path, const ScanSourceOptions& opts)
+      : SourceBase(opts), reader_(path, readerOptions(opts))
+  {
+    label_ = reader_.scanTopic();
+  }
+  bool next(sensor::ScanInput& out) override
+  {
+    mrpt::obs::CObservation::Ptr obs;
+    while (reader_.next(obs))
+      if (take(obs, out)) return true;
+    return false;
+  }
+  std::string describe() const override
+  {
+    if (reader_.scanTopic().empty()) return "ROS bag " + reader_.path() + " (no LaserScan topic)";
+    return "ROS bag " + reader_.path() + " (scans " + reader_.scanTopic() + ", sensor pose " +
+           reader_.sensorPoseSource() + ", " +
+           (reader_.odomTopic().empty() ? std::string(opts_.use_odometry ? "no odometry topic: laser only"
+                                                                         : "odometry not used")
+                                        : "odometry " + reader_.odomTopic()) +
+           ")";
+  }
+  double fractionRead() const override { return reader_.fractionRead(); }
+  std::string noScanReason(const std::string&) const override
+  {
+    if (stats_.scans > 0) return "";
+    if (reader_.scanTopic().empty())
+      return "no sensor_msgs/LaserScan topic in it; its topics: " + formatTopics(reader_.topics());
+    return "no message on its LaserScan topic " + reader_.scanTopic() + "; its topics: " +
+           formatTopics(reader_.topics());
+  }
+
+ private:
+  static BagReaderOptions readerOptions(const ScanSourceOptions& opts)
+  {
+    if (!opts.scan_topic.empty() && !opts.sensor_label.empty() && opts.scan_topic != opts.sensor_label)
+      throw std::runtime_error("the sensor label of a bag's scans is their topic: --sensor-label '" +
+                               opts.sensor_label + "' and --scan-topic '" + opts.scan_topic + "' disagree");
+    return {opts.scan_topic.empty() ? opts.sensor_label : opts.scan_topic, opts.odom_topic, opts.use_odometry};
+  }
+
+  BagReader reader_;
+};
+
 }  // namespace
+
+std::string ScanSource::noScanReason(const std::string& sensor_label) const
+{
+  return io::noScanReason(stats(), sensor_label);
+}
 
 size_t ScanSourceStats::otherSensors() const
 {
@@ -190,6 +243,9 @@ bool endsWith(const std::string& s, const std::string& suffix)
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
                                            const CarmenParams& carmen)
 {
+  if (isBagFile(path)) return std::make_unique<BagSource>(path, opts);
+  if (!opts.scan_topic.empty() || !opts.odom_topic.empty())
+    throw std::runtime_error("'" + path + "' is not a ROS bag: scan and odometry topics apply only to bags");
   for (const char* ext : {".log", ".log.gz", ".clf", ".clf.gz"})
     if (endsWith(path, ext)) return std::make_unique<CarmenSource>(path, opts, carmen);
   return std::make_unique<RawlogSource>(path, opts);

@@ -1,8 +1,10 @@
 #pragma once
-// Where a run's scans come from: an MRPT rawlog (either format) or a CARMEN log, read one
-// scan at a time. Odometry found in the log (CObservationOdometry readings or rawlog actions)
-// becomes each scan's odometry increment since the previous scan, unless disabled.
+// Where a run's scans come from: an MRPT rawlog (either format), a CARMEN log or a ROS 1 bag,
+// read one scan at a time. Odometry found in the log (CObservationOdometry readings, rawlog
+// actions, nav_msgs/Odometry messages) becomes each scan's odometry increment since the
+// previous scan, unless disabled.
 
+#include <swslam/io/bag_reader.h>
 #include <swslam/io/carmen_log.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/sensor/scan_input.h>
@@ -20,7 +22,9 @@ namespace swslam::io
 struct ScanSourceOptions
 {
   bool use_odometry = true;
-  std::string sensor_label;  ///< only scans of this sensor; empty: the first one seen
+  std::string sensor_label;  ///< only scans of this sensor; empty: the first one seen (bags: the scan topic)
+  std::string scan_topic;    ///< bags only: the LaserScan topic; empty: sensor_label, else the only one
+  std::string odom_topic;    ///< bags only: the Odometry topic; empty: the only one, if any
 };
 
 /** Counts of what a source skipped. */
@@ -46,14 +50,17 @@ class ScanSource
   virtual std::string describe() const = 0;
   /** Fraction of the input read, in [0, 1]. */
   virtual double fractionRead() const = 0;
+  /** Why it gave no scan (see the function noScanReason below); empty if it gave scans. */
+  virtual std::string noScanReason(const std::string& sensor_label) const;
 };
 
 /** Why a source gave no scan: the labels it skipped (when a sensor label was asked for), or
  * that it held no laser scan at all. Empty if it gave scans. */
 std::string noScanReason(const ScanSourceStats& stats, const std::string& sensor_label);
 
-/** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), else as a
- * rawlog. Throws std::runtime_error if it cannot be opened. */
+/** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), as a ROS bag if
+ * it is one (isBagFile), else as a rawlog. Throws std::runtime_error if it cannot be opened, or
+ * if topics are given for an input that is not a bag. */
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
                                            const CarmenParams& carmen);
 

@@ -1,0 +1,295 @@
+#include <swslam/io/bag_reader.h>
+
+#include <swslam/io/ros_conversion.h>
+
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+
+#include <mrpt/ros1bridge/time.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+namespace swslam::io
+{
+namespace
+{
+constexpr const char* kLaserScanType = "sensor_msgs/LaserScan";
+constexpr const char* kOdometryType = "nav_msgs/Odometry";
+constexpr const char* kTfStaticTopic = "/tf_static";
+constexpr const char* kDefaultBaseFrame = "base_link";
+/** Larger than any scan (2^20 rays with intensities: 8 MiB); a message size past it is damage. */
+constexpr uint32_t kMaxMessageBytes = 64u << 20;
+/** Messages of one time read ahead (to give the odometry first), at most. */
+constexpr size_t kMaxSameTime = 64;
+
+using LayoutCheck = std::string (*)(const std::vector<uint8_t>&);
+
+/** The message `m` as an M: its definition checked (md5), its bytes copied and their lengths
+ * checked by `layout` before ROS deserializes them. Throws std::runtime_error or ros::Exception. */
+template <class M>
+M decode(const rosbag::MessageInstance& m, LayoutCheck layout)
+{
+  const std::string want = ros::message_traits::MD5Sum<M>::value();
+  if (m.getMD5Sum() != want)
+    throw std::runtime_error("its " + m.getDataType() + " definition (md5 " + m.getMD5Sum() +
+                             ") is not the one this program reads (md5 " + want + ")");
+  const uint32_t size = m.size();
+  if (size > kMaxMessageBytes) throw std::runtime_error("it states a size of " + std::to_string(size) + " bytes");
+  std::vector<uint8_t> bytes(size);
+  ros::serialization::OStream out(bytes.data(), size);
+  m.write(out);
+  if (layout)
+    if (const std::string problem = layout(bytes); !problem.empty()) throw std::runtime_error(problem);
+  M msg;
+  ros::serialization::IStream in(bytes.data(), size);
+  ros::serialization::deserialize(in, msg);
+  return msg;
+}
+
+bool startsWithBagMagic(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  char magic[8] = {};
+  f.read(magic, 7);
+  return f.gcount() == 7 && std::string(magic) == "#ROSBAG";
+}
+
+/** The topics of `type`, by name. */
+std::vector<std::string> topicsOfType(const std::vector<BagTopic>& topics, const std::string& type)
+{
+  std::vector<std::string> out;
+  for (const BagTopic& t : topics)
+    if (t.type == type) out.push_back(t.name);
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& names)
+{
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+}  // namespace
+
+struct BagReader::Bag
+{
+  rosbag::Bag file;
+  std::unique_ptr<rosbag::View> view;  ///< the chosen topics, in time order
+  rosbag::View::iterator it;
+};
+
+BagReader::BagReader(const std::string& path, const BagReaderOptions& opts) : path_(path), bag_(std::make_unique<Bag>())
+{
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open bag '" + path + "': no such file");
+  if (!startsWithBagMagic(path))
+    throw std::runtime_error("'" + path + "' is not a ROS bag: it does not start with \"#ROSBAG\"");
+  try
+  {
+    bag_->file.open(path, rosbag::bagmode::Read);
+  }
+  catch (const rosbag::BagUnindexedException&)
+  {
+    throw std::runtime_error("bag '" + path + "' has no index: its recording was cut short (`rosbag reindex` "
+                             "rebuilds the index)");
+  }
+  catch (const ros::Exception& e)
+  {
+    throw std::runtime_error("cannot read bag '" + path + "': " + e.what() +
+                             " (a truncated bag has lost its index, which is written at its end: `rosbag reindex` "
+                             "rebuilds it)");
+  }
+  try
+  {
+    rosbag::View all(bag_->file);
+    for (const rosbag::ConnectionInfo* c : all.getConnections())
+    {
+      const bool seen = std::any_of(topics_.begin(), topics_.end(), [&](const BagTopic& t) { return t.name == c->topic; });
+      if (!seen) topics_.push_back({c->topic, c->datatype, rosbag::View(bag_->file, rosbag::TopicQuery(c->topic)).size()});
+    }
+    std::sort(topics_.begin(), topics_.end(), [](const BagTopic& a, const BagTopic& b) { return a.name < b.name; });
+    chooseTopics(opts);
+    findSensorPose();
+    std::vector<std::string> chosen;
+    for (const std::string& t : {scan_topic_, odom_topic_})
+      if (!t.empty()) chosen.push_back(t);
+    if (!chosen.empty())
+    {
+      bag_->view = std::make_unique<rosbag::View>(bag_->file, rosbag::TopicQuery(chosen));
+      total_ = bag_->view->size();
+      bag_->it = bag_->view->begin();
+    }
+  }
+  catch (const ros::Exception& e)
+  {
+    throw std::runtime_error("cannot read bag '" + path + "': " + e.what());
+  }
+}
+
+BagReader::~BagReader() = default;
+
+void BagReader::chooseTopics(const BagReaderOptions& opts)
+{
+  // One topic of `type`: the one asked for, or the bag's only one (none: empty).
+  auto choose = [&](const std::string& asked, const std::string& type, const std::string& option) -> std::string {
+    if (!asked.empty())
+    {
+      const auto it = std::find_if(topics_.begin(), topics_.end(), [&](const BagTopic& t) { return t.name == asked; });
+      if (it == topics_.end())
+        throw std::runtime_error("bag '" + path_ + "' has no topic '" + asked + "'; its topics: " + formatTopics(topics_));
+      if (it->type != type)
+        throw std::runtime_error("bag '" + path_ + "': topic '" + asked + "' is " + it->type + ", not " + type);
+      return asked;
+    }
+    const auto names = topicsOfType(topics_, type);
+    if (names.size() > 1)
+      throw std::runtime_error("bag '" + path_ + "' has " + std::to_string(names.size()) + " " + type +
+                               " topics (" + joined(names) + "): choose one with " + option);
+    return names.empty() ? "" : names.front();
+  };
+  scan_topic_ = choose(opts.scan_topic, kLaserScanType, "--scan-topic");
+  if (opts.read_odometry) odom_topic_ = choose(opts.odom_topic, kOdometryType, "--odom-topic");
+}
+
+void BagReader::findSensorPose()
+{
+  sensor_pose_source_ = "identity";
+  if (scan_topic_.empty()) return;
+  auto first = [&](const std::string& topic) {
+    rosbag::View v(bag_->file, rosbag::TopicQuery(topic));
+    if (v.begin() == v.end()) throw std::runtime_error("topic '" + topic + "' has no message");
+    return *v.begin();
+  };
+  std::string scan_frame, base_frame = kDefaultBaseFrame;
+  try
+  {
+    scan_frame = decode<sensor_msgs::LaserScan>(first(scan_topic_), laserScanLayoutProblem).header.frame_id;
+    if (!odom_topic_.empty())
+    {
+      const std::string child = decode<nav_msgs::Odometry>(first(odom_topic_), nullptr).child_frame_id;
+      if (!child.empty()) base_frame = child;
+    }
+  }
+  catch (const std::exception& e)
+  {
+    sensor_pose_source_ = std::string("identity (the first message cannot be read: ") + e.what() + ")";
+    return;
+  }
+  if (scan_frame.empty() || scan_frame == base_frame)
+  {
+    sensor_pose_source_ = "identity (the scans are in frame '" + base_frame + "')";
+    return;
+  }
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  const bool has_tf = std::any_of(topics_.begin(), topics_.end(), [](const BagTopic& t) {
+    return t.name == kTfStaticTopic && t.type == "tf2_msgs/TFMessage";
+  });
+  if (has_tf)
+  {
+    rosbag::View v(bag_->file, rosbag::TopicQuery(kTfStaticTopic));
+    try
+    {
+      for (const rosbag::MessageInstance& m : v)
+      {
+        const auto msg = decode<tf2_msgs::TFMessage>(m, tfMessageLayoutProblem);
+        transforms.insert(transforms.end(), msg.transforms.begin(), msg.transforms.end());
+      }
+    }
+    catch (const std::exception& e)  // the scans can still be read
+    {
+      sensor_pose_source_ = std::string("identity (a /tf_static message cannot be read: ") + e.what() + ")";
+      return;
+    }
+  }
+  if (poseInAncestor(transforms, scan_frame, base_frame, sensor_pose_))
+    sensor_pose_source_ = "/tf_static '" + base_frame + "' -> '" + scan_frame + "'";
+  else
+    sensor_pose_source_ = "identity (no /tf_static transform from '" + base_frame + "' to '" + scan_frame + "')";
+}
+
+bool BagReader::next(mrpt::obs::CObservation::Ptr& out)
+{
+  if (pending_.empty()) readSameTime();
+  if (pending_.empty())
+  {
+    if (deferred_error_) throw *deferred_error_;
+    return false;
+  }
+  out = pending_.front();
+  pending_.pop_front();
+  read_++;
+  return true;
+}
+
+void BagReader::readSameTime()
+{
+  if (!bag_->view || deferred_error_) return;
+  std::optional<ros::Time> time;
+  try
+  {
+    while (bag_->it != bag_->view->end() && pending_.size() < kMaxSameTime)
+    {
+      const rosbag::MessageInstance& m = *bag_->it;
+      if (time && m.getTime() != *time) break;
+      time = m.getTime();
+      // A message without a header stamp (some drivers leave it zero) is stamped with its bag time.
+      if (m.getTopic() == scan_topic_)
+      {
+        auto msg = decode<sensor_msgs::LaserScan>(m, laserScanLayoutProblem);
+        if (msg.header.stamp.isZero()) msg.header.stamp = m.getTime();
+        pending_.push_back(
+            std::make_shared<mrpt::obs::CObservation2DRangeScan>(scanFromRos(msg, scan_topic_, sensor_pose_)));
+      }
+      else
+      {
+        auto msg = decode<nav_msgs::Odometry>(m, nullptr);
+        if (msg.header.stamp.isZero()) msg.header.stamp = m.getTime();
+        pending_.push_back(std::make_shared<mrpt::obs::CObservationOdometry>(odometryFromRos(msg, odom_topic_)));
+      }
+      ++bag_->it;
+    }
+  }
+  catch (const std::exception& e)  // ros::Exception (rosbag's, deserialization) and ours
+  {
+    const size_t index = read_ + pending_.size();
+    std::ostringstream where;
+    where << "bag '" << path_ << "': message #" << index << " of " << total_ << " cannot be read";
+    try
+    {
+      const rosbag::MessageInstance& m = *bag_->it;
+      where << " (" << m.getTopic() << " at " << m.getTime() << ")";
+    }
+    catch (const std::exception&)
+    {
+    }
+    deferred_error_ = std::make_shared<BagError>(where.str() + ": " + e.what(), index);
+  }
+  // rosbag orders messages of one time arbitrarily; a rawlog gives the odometry first.
+  std::stable_partition(pending_.begin(), pending_.end(), [](const mrpt::obs::CObservation::Ptr& o) {
+    return std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o) != nullptr;
+  });
+}
+
+double BagReader::fractionRead() const { return total_ == 0 ? 1.0 : double(read_) / double(total_); }
+
+std::string formatTopics(const std::vector<BagTopic>& topics)
+{
+  if (topics.empty()) return "none";
+  std::string s;
+  for (const BagTopic& t : topics)
+    s += (s.empty() ? "" : ", ") + t.name + " (" + t.type + ", " + std::to_string(t.messages) +
+         (t.messages == 1 ? " message)" : " messages)");
+  return s;
+}
+
+bool isBagFile(const std::string& path)
+{
+  const std::string ext = ".bag";
+  if (path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0) return true;
+  return startsWithBagMagic(path);
+}
+
+}  // namespace swslam::io

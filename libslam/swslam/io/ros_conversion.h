@@ -1,0 +1,61 @@
+#pragma once
+// ROS 1 messages <-> MRPT observations, for bags (bag_reader, rawlog2bag). Times and poses go
+// through MRPT's ROS 1 bridge; the scan's rays do not: the bridge maps each MRPT ray to a ROS
+// index by truncating a float product, which moves rays by one index and drops the last one
+// (a 5-ray scan r0..r4 comes back as r0 r0 r1 r2 r3), and it keeps no ray past 99% of
+// range_max. Here every ray keeps its index and angle.
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace swslam::io
+{
+/** The scan of `msg`, labelled `label`, from a sensor at `sensor_pose` on the vehicle. Ray i
+ * of a ROS scan points at angle_min + i * angle_increment: the MRPT scan (symmetric about its
+ * own x axis) gets the same rays in counter-clockwise order, its x axis turned to the middle of
+ * the fan (folded into sensorPose). A ray is valid if finite and within [range_min,
+ * range_max] (REP 117: NaN and +-inf are no measurement); an invalid ray that is not finite
+ * reads range_max. Throws std::invalid_argument if the scan has fewer than 2 rays or a zero or
+ * non-finite angle increment. */
+mrpt::obs::CObservation2DRangeScan scanFromRos(const sensor_msgs::LaserScan& msg, const std::string& label,
+                                               const mrpt::poses::CPose3D& sensor_pose);
+
+/** The scan as a ROS message in frame `frame_id` (its pose on the vehicle goes to
+ * /tf_static): rays counter-clockwise from -aperture/2; invalid rays +inf (no return). */
+sensor_msgs::LaserScan scanToRos(const mrpt::obs::CObservation2DRangeScan& scan, const std::string& frame_id);
+
+/** The planar odometry of `msg` (its pose's x, y and yaw; the twist as local velocities). */
+mrpt::obs::CObservationOdometry odometryFromRos(const nav_msgs::Odometry& msg, const std::string& label);
+
+/** The odometry as a ROS message: pose of `child_frame` in `frame`. */
+nav_msgs::Odometry odometryToRos(const mrpt::obs::CObservationOdometry& odo, const std::string& frame,
+                                 const std::string& child_frame);
+
+/** A static transform: the pose of `child` in `parent`, stamped `stamp`. */
+geometry_msgs::TransformStamped transformToRos(const mrpt::poses::CPose3D& pose, const std::string& parent,
+                                               const std::string& child, const ros::Time& stamp);
+
+/** The pose of `child` in `parent` that a transform message states. */
+mrpt::poses::CPose3D transformFromRos(const geometry_msgs::Transform& t);
+
+/** The pose of frame `child` in frame `ancestor`, composed along the parent links of
+ * `transforms` (a tf tree); false if `ancestor` is not above `child` in it. */
+bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transforms, const std::string& child,
+                    const std::string& ancestor, mrpt::poses::CPose3D& pose);
+
+/** Why the serialized `bytes` are not a well-formed message of that type ("" if they are): the
+ * lengths its arrays state must fit in the bytes, checked before ROS's deserializer sizes a
+ * vector by them (it allocates first: a corrupt length would ask for gigabytes). */
+std::string laserScanLayoutProblem(const std::vector<uint8_t>& bytes);
+std::string tfMessageLayoutProblem(const std::vector<uint8_t>& bytes);
+
+}  // namespace swslam::io
