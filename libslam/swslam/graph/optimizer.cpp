@@ -334,6 +334,9 @@ OptimizationReport optimizeWithKernels(GraphProblem& problem, const GraphOptimiz
   return rep;
 }
 
+/** Adaptive: a kind with fewer robustified edges than this keeps the configured kernel. */
+constexpr size_t kAdaptiveMinEdges = 10;
+
 /** Per edge kind with robustified edges: the scale kernel_c times the robust scale of its
  * residuals at the problem's poses, and the shape that fits them best, no lower than
  * `alpha_floor` (KernelSchedule::Adaptive). `limited` tells whether the floor held a shape. */
@@ -349,8 +352,11 @@ KindKernels estimateKernels(const GraphProblem& p, const GraphOptimizerParams& p
   for (int kind = 0; kind < kEdgeKindCount; ++kind)
   {
     if (by_kind[kind].empty()) continue;
-    const double c = params.kernel_c * robustResidualScale(by_kind[kind]);
-    const double alpha = shapes.estimate(by_kind[kind], c).alpha;
+    // Too few residuals tell no distribution (one false loop alone would be its own scale):
+    // such a kind keeps the configured kernel, graduated like gnc.
+    const bool estimated = by_kind[kind].size() >= kAdaptiveMinEdges;
+    const double c = estimated ? params.kernel_c * robustResidualScale(by_kind[kind]) : params.kernel_c;
+    const double alpha = estimated ? shapes.estimate(by_kind[kind], c).alpha : params.kernel_alpha;
     limited = limited || alpha < alpha_floor;
     k[kind] = {std::max(alpha, alpha_floor), c};
   }
