@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +51,19 @@ ShapeEstimate ShapeEstimator::estimate(const std::vector<double>& residuals, dou
     if (k == 0 || nll < best.negative_log_likelihood) best = {alphas_[k], nll};
   }
   return best;
+}
+
+const ShapeEstimator& shapeEstimatorFor(double alpha_min, double step, double tau)
+{
+  struct Memo
+  {
+    double alpha_min, step, tau;
+    ShapeEstimator estimator;
+  };
+  thread_local std::optional<Memo> memo;
+  if (!memo || memo->alpha_min != alpha_min || memo->step != step || memo->tau != tau)
+    memo.emplace(Memo{alpha_min, step, tau, ShapeEstimator(alpha_min, step, tau)});
+  return memo->estimator;
 }
 
 double robustResidualScale(std::vector<double> residuals)

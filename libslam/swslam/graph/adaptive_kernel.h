@@ -42,6 +42,10 @@ class ShapeEstimator
   std::vector<double> alphas_, log_partition_;
 };
 
+/** The estimator of this grid, tabulated once per thread and grid (a memo: tabulating Z over
+ * the grid costs far more than one estimate, and the optimizer asks for it every window). */
+const ShapeEstimator& shapeEstimatorFor(double alpha_min, double step, double tau);
+
 /** A robust scale of Mahalanobis residual norms of 3-dof edges: median(r) / the median of
  * the chi distribution with 3 degrees of freedom (1.5382), so that residuals whose information
  * matrices are right give 1, over-confident ones more. 1 with no residual; at least 1e-3. */

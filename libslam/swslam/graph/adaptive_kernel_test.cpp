@@ -112,6 +112,16 @@ TEST(AdaptiveKernel, RobustScaleOfMahalanobisResiduals)
   EXPECT_EQ(swslam::graph::robustResidualScale({0.0, 0.0}), 1e-3);
 }
 
+TEST(AdaptiveKernel, TheMemoIsTheEstimatorOfItsGrid)
+{
+  const ShapeEstimator& a = swslam::graph::shapeEstimatorFor(-4.0, 0.5, 10.0);
+  EXPECT_EQ(&a, &swslam::graph::shapeEstimatorFor(-4.0, 0.5, 10.0));
+  EXPECT_EQ(a.alphas().size(), 13u);  // 2, 1.5, ..., -4
+  const ShapeEstimator& b = swslam::graph::shapeEstimatorFor(-2.0, 0.5, 10.0);
+  EXPECT_EQ(b.alphas().size(), 9u);
+  EXPECT_EQ(b.alphas().back(), -2.0);
+}
+
 TEST(AdaptiveKernel, RejectsBadGrids)
 {
   EXPECT_THROW(ShapeEstimator(2.0, 0.1, 10.0), std::invalid_argument);

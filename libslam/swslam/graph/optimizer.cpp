@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -422,8 +421,9 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   params.check();
   checkProblem(problem);
   const bool adaptive = params.kernel_schedule == KernelSchedule::Adaptive;
-  std::optional<ShapeEstimator> shapes;
-  if (adaptive) shapes.emplace(params.adaptive_alpha_min, params.adaptive_alpha_step, params.adaptive_truncation);
+  const ShapeEstimator* shapes =
+      adaptive ? &shapeEstimatorFor(params.adaptive_alpha_min, params.adaptive_alpha_step, params.adaptive_truncation)
+               : nullptr;
   const double alpha_end = adaptive ? params.adaptive_alpha_min : params.kernel_alpha;
   const std::vector<geometry::Pose2> given = problem.poses;
   GraphOptimizerParams stage = params;
