@@ -52,13 +52,13 @@ int main(int argc, char** argv)
                            return run;
                          }});
 #endif
-      swslam::bench::falseLoopCases("grid-" + std::to_string(o.nodes), s.graph, false_loops.getValue(), methods,
+      swslam::bench::falseLoopCases("grid-" + std::to_string(o.nodes), s.graph, false_loops.getValue(), params, methods,
                                     stdout);
       // A public graph too: MRPT's circle of 50 nodes, from its own initial guess.
       const std::string circle = datasets.getValue() + "/graph_2d_circle_50nodes.graph";
       if (std::ifstream(circle).good())
         swslam::bench::falseLoopCases("mrpt-circle-50", swslam::graph::loadGraph(circle), false_loops.getValue(),
-                                      methods, stdout);
+                                      params, methods, stdout);
       else
         std::printf("(MRPT's %s not found: --mrpt-datasets)\n", circle.c_str());
       return 0;

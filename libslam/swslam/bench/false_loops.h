@@ -25,6 +25,9 @@ struct RobustMethod
  * params.switched_off_weight at its poses (for solvers that do not report them). */
 std::vector<size_t> switchedOffEdges(const graph::PoseGraph& graph, const graph::GraphOptimizerParams& params);
 
+/** The cost params' kernel gives the graph at its poses (every robustified kind alike). */
+double targetCost(const graph::PoseGraph& graph, const graph::GraphOptimizerParams& params);
+
 /** Ours: least squares, the fixed kernel of `params` (its robustified kinds), and graduated
  * non-convexity to the same kernel with the odometry chain trusted (consecutive edges not
  * robustified: the loops are what may be false). */
@@ -38,6 +41,9 @@ struct FalseLoopCase
   double rmse_to_clean = 0;   ///< [m] node positions against the outlier-free optimum
   /** chi2 of the true edges at the result, relative to the optimum's, minus 1 (0: as good). */
   double clean_chi2_excess = 0;
+  /** The target kernel's (params') cost of the graph with its false loops at the result, over
+   * the same at the outlier-free optimum: below 1, the kernel itself prefers the result. */
+  double target_cost_ratio = 1;
   double precision = 1, recall = 1;  ///< of the switched-off edges against the false loops
   size_t switched_off = 0;
   double time_s = 0;
@@ -45,14 +51,16 @@ struct FalseLoopCase
 };
 
 /** The outlier-free optimum of `clean` (least squares from its guess), then every count of
- * `counts` false loops (seed fixed), random and grouped, by every method. Each case is also
- * printed to `progress` as it ends, if given. */
+ * `counts` false loops (seed fixed), random and grouped, by every method; `params` is the
+ * target kernel the costs are measured with. Each case is also printed to `progress` as it
+ * ends, if given. */
 std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::PoseGraph& clean,
                                           const std::vector<size_t>& counts,
+                                          const graph::GraphOptimizerParams& params,
                                           const std::vector<RobustMethod>& methods,
                                           std::FILE* progress = nullptr);
 
-/** One line per case: "graph method loops=N grouped=0 rmse_m=... precision=... recall=... time_s=...". */
+/** One line per case: graph, method, false loops, random or grouped, then the fields by name. */
 std::string formatCase(const FalseLoopCase& c);
 
 }  // namespace swslam::bench

@@ -25,21 +25,22 @@ double barronPartition(double alpha, double tau, int intervals)
   return 2.0 * sum * h / 3.0;
 }
 
-ShapeEstimator::ShapeEstimator(double alpha_min, double step, double tau) : tau_(tau)
+ShapeEstimator::ShapeEstimator(double alpha_min, double alpha_max, double step, double tau) : tau_(tau)
 {
-  if (!std::isfinite(alpha_min) || alpha_min >= 2.0 || !(step > 0) || !(tau > 0) || !std::isfinite(tau))
-    throw std::invalid_argument("adaptive kernel: needs a finite alpha_min < 2, step > 0 and tau > 0");
-  // From 2 down, so that 2 itself is on the grid.
-  for (double a = 2.0; a > alpha_min - 1e-9; a -= step)
+  if (!std::isfinite(alpha_min) || !(alpha_min <= alpha_max) || !(alpha_max <= 2.0) || !(step > 0) || !(tau > 0) ||
+      !std::isfinite(tau))
+    throw std::invalid_argument("adaptive kernel: needs finite alpha_min <= alpha_max <= 2, step > 0 and tau > 0");
+  // From alpha_max down, so that alpha_max itself is on the grid.
+  for (size_t k = 0; alpha_max - static_cast<double>(k) * step > alpha_min - 1e-9; ++k)
   {
-    alphas_.push_back(a);
-    log_partition_.push_back(std::log(barronPartition(a, tau)));
+    alphas_.push_back(alpha_max - static_cast<double>(k) * step);
+    log_partition_.push_back(std::log(barronPartition(alphas_.back(), tau)));
   }
 }
 
 ShapeEstimate ShapeEstimator::estimate(const std::vector<double>& residuals, double c) const
 {
-  ShapeEstimate best;
+  ShapeEstimate best{alphas_.front(), 0.0};
   if (residuals.empty()) return best;
   const double n = static_cast<double>(residuals.size());
   for (size_t k = 0; k < alphas_.size(); ++k)
@@ -53,16 +54,16 @@ ShapeEstimate ShapeEstimator::estimate(const std::vector<double>& residuals, dou
   return best;
 }
 
-const ShapeEstimator& shapeEstimatorFor(double alpha_min, double step, double tau)
+const ShapeEstimator& shapeEstimatorFor(double alpha_min, double alpha_max, double step, double tau)
 {
   struct Memo
   {
-    double alpha_min, step, tau;
+    double alpha_min, alpha_max, step, tau;
     ShapeEstimator estimator;
   };
   thread_local std::optional<Memo> memo;
-  if (!memo || memo->alpha_min != alpha_min || memo->step != step || memo->tau != tau)
-    memo.emplace(Memo{alpha_min, step, tau, ShapeEstimator(alpha_min, step, tau)});
+  if (!memo || memo->alpha_min != alpha_min || memo->alpha_max != alpha_max || memo->step != step || memo->tau != tau)
+    memo.emplace(Memo{alpha_min, alpha_max, step, tau, ShapeEstimator(alpha_min, alpha_max, step, tau)});
   return memo->estimator;
 }
 

@@ -18,21 +18,22 @@ double barronPartition(double alpha, double tau, int intervals = 4000);
 
 struct ShapeEstimate
 {
-  double alpha = 2.0;
+  double alpha = 2.0;  ///< the grid's highest when there is no residual
   double negative_log_likelihood = 0.0;  ///< per residual, at alpha
 };
 
-/** The alpha of the grid alpha_min, alpha_min + step, ..., 2 whose truncated density fits
- * the residuals best. Z is tabulated once per grid, so an estimate costs one pass over the
+/** The alpha of the grid alpha_max, alpha_max - step, ..., down to alpha_min whose truncated
+ * density fits the residuals best. Z is tabulated once per grid, so an estimate costs one pass over the
  * residuals per grid value. */
 class ShapeEstimator
 {
  public:
-  /** Throws std::invalid_argument unless alpha_min < 2 (finite), step > 0 and tau > 0. */
-  ShapeEstimator(double alpha_min, double step, double tau);
+  /** Throws std::invalid_argument unless alpha_min <= alpha_max <= 2 (finite), step > 0 and
+   * tau > 0. */
+  ShapeEstimator(double alpha_min, double alpha_max, double step, double tau);
 
   /** Residuals r >= 0 (the Mahalanobis norms of edges) at scale c > 0; residuals beyond
-   * tau c count as tau c. With no residual, alpha = 2. */
+   * tau c count as tau c. With no residual, alpha_max. */
   ShapeEstimate estimate(const std::vector<double>& residuals, double c) const;
 
   const std::vector<double>& alphas() const { return alphas_; }
@@ -44,7 +45,7 @@ class ShapeEstimator
 
 /** The estimator of this grid, tabulated once per thread and grid (a memo: tabulating Z over
  * the grid costs far more than one estimate, and the optimizer asks for it every window). */
-const ShapeEstimator& shapeEstimatorFor(double alpha_min, double step, double tau);
+const ShapeEstimator& shapeEstimatorFor(double alpha_min, double alpha_max, double step, double tau);
 
 /** A robust scale of Mahalanobis residual norms of 3-dof edges: median(r) / the median of
  * the chi distribution with 3 degrees of freedom (1.5382), so that residuals whose information

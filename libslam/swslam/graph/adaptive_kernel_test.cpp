@@ -69,7 +69,7 @@ TEST(AdaptiveKernel, PartitionMatchesClosedForms)
 
 TEST(AdaptiveKernel, InliersGiveLeastSquaresAndOutliersALowShape)
 {
-  const ShapeEstimator estimator(-10.0, 0.1, 10.0);
+  const ShapeEstimator estimator(-10.0, 2.0, 0.1, 10.0);
   std::vector<double> r = chi3Residuals(3000, 1.0, 1);
   EXPECT_DOUBLE_EQ(estimator.estimate(r, 3.0).alpha, 2.0);
   addOutliers(r, 30, 2);  // 1%
@@ -80,11 +80,15 @@ TEST(AdaptiveKernel, InliersGiveLeastSquaresAndOutliersALowShape)
   EXPECT_LT(many, 0.5);
   EXPECT_LT(many, one_percent);
   EXPECT_DOUBLE_EQ(estimator.estimate({}, 3.0).alpha, 2.0);
+  // Within bounds: the clean residuals take the highest shape allowed.
+  const ShapeEstimator bounded(-10.0, 0.0, 0.1, 10.0);
+  EXPECT_DOUBLE_EQ(bounded.estimate(chi3Residuals(3000, 1.0, 1), 3.0).alpha, 0.0);
+  EXPECT_DOUBLE_EQ(bounded.estimate({}, 3.0).alpha, 0.0);
 }
 
 TEST(AdaptiveKernel, EstimateIsTheBruteForceArgmin)
 {
-  const ShapeEstimator estimator(-6.0, 0.25, 10.0);
+  const ShapeEstimator estimator(-6.0, 2.0, 0.25, 10.0);
   std::vector<double> r = chi3Residuals(500, 1.3, 4);
   addOutliers(r, 40, 5);
   const double c = 3.0;
@@ -114,18 +118,19 @@ TEST(AdaptiveKernel, RobustScaleOfMahalanobisResiduals)
 
 TEST(AdaptiveKernel, TheMemoIsTheEstimatorOfItsGrid)
 {
-  const ShapeEstimator& a = swslam::graph::shapeEstimatorFor(-4.0, 0.5, 10.0);
-  EXPECT_EQ(&a, &swslam::graph::shapeEstimatorFor(-4.0, 0.5, 10.0));
+  const ShapeEstimator& a = swslam::graph::shapeEstimatorFor(-4.0, 2.0, 0.5, 10.0);
+  EXPECT_EQ(&a, &swslam::graph::shapeEstimatorFor(-4.0, 2.0, 0.5, 10.0));
   EXPECT_EQ(a.alphas().size(), 13u);  // 2, 1.5, ..., -4
-  const ShapeEstimator& b = swslam::graph::shapeEstimatorFor(-2.0, 0.5, 10.0);
+  const ShapeEstimator& b = swslam::graph::shapeEstimatorFor(-2.0, 2.0, 0.5, 10.0);
   EXPECT_EQ(b.alphas().size(), 9u);
   EXPECT_EQ(b.alphas().back(), -2.0);
 }
 
 TEST(AdaptiveKernel, RejectsBadGrids)
 {
-  EXPECT_THROW(ShapeEstimator(2.0, 0.1, 10.0), std::invalid_argument);
-  EXPECT_THROW(ShapeEstimator(-INFINITY, 0.1, 10.0), std::invalid_argument);
-  EXPECT_THROW(ShapeEstimator(-2.0, 0.0, 10.0), std::invalid_argument);
-  EXPECT_THROW(ShapeEstimator(-2.0, 0.1, NAN), std::invalid_argument);
+  EXPECT_THROW(ShapeEstimator(1.0, 0.0, 0.1, 10.0), std::invalid_argument);
+  EXPECT_THROW(ShapeEstimator(-2.0, 2.5, 0.1, 10.0), std::invalid_argument);
+  EXPECT_THROW(ShapeEstimator(-INFINITY, 2.0, 0.1, 10.0), std::invalid_argument);
+  EXPECT_THROW(ShapeEstimator(-2.0, 2.0, 0.0, 10.0), std::invalid_argument);
+  EXPECT_THROW(ShapeEstimator(-2.0, 2.0, 0.1, NAN), std::invalid_argument);
 }

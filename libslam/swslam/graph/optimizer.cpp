@@ -236,6 +236,11 @@ double graphChi2(const GraphProblem& problem)
   return evaluate(problem, problem.poses, uniformKernels({2.0, 1.0}), measurementRotations(problem)).chi2;
 }
 
+double robustCost(const GraphProblem& problem, const KindKernels& kernels)
+{
+  return evaluate(problem, problem.poses, kernels, measurementRotations(problem)).cost;
+}
+
 void checkProblem(const GraphProblem& p)
 {
   if (p.fixed.size() != p.poses.size())
@@ -337,10 +342,11 @@ OptimizationReport optimizeWithKernels(GraphProblem& problem, const GraphOptimiz
 constexpr size_t kAdaptiveMinEdges = 10;
 
 /** Per edge kind with robustified edges: the scale kernel_c times the robust scale of its
- * residuals at the problem's poses, and the shape that fits them best, no lower than
- * `alpha_floor` (KernelSchedule::Adaptive). `limited` tells whether the floor held a shape. */
+ * residuals at the problem's poses, and the shape that fits them best, within
+ * [alpha_floor, alpha_cap] (KernelSchedule::Adaptive). `limited` tells whether the floor held a
+ * shape. */
 KindKernels estimateKernels(const GraphProblem& p, const GraphOptimizerParams& params,
-                            const ShapeEstimator& shapes, double alpha_floor, bool& limited)
+                            const ShapeEstimator& shapes, double alpha_floor, double alpha_cap, bool& limited)
 {
   const std::vector<double> r = robustResiduals(p);
   std::array<std::vector<double>, kEdgeKindCount> by_kind;
@@ -354,10 +360,12 @@ KindKernels estimateKernels(const GraphProblem& p, const GraphOptimizerParams& p
     // Too few residuals tell no distribution (one false loop alone would be its own scale):
     // such a kind keeps the configured kernel, graduated like gnc.
     const bool estimated = by_kind[kind].size() >= kAdaptiveMinEdges;
-    const double c = estimated ? params.kernel_c * robustResidualScale(by_kind[kind]) : params.kernel_c;
+    // The information matrices bound the precision: residuals tighter than they say (exact
+    // simulated measurements) do not shrink the scale below kernel_c.
+    const double c = estimated ? params.kernel_c * std::max(1.0, robustResidualScale(by_kind[kind])) : params.kernel_c;
     const double alpha = estimated ? shapes.estimate(by_kind[kind], c).alpha : params.kernel_alpha;
     limited = limited || alpha < alpha_floor;
-    k[kind] = {std::max(alpha, alpha_floor), c};
+    k[kind] = {std::min(alpha_cap, std::max(alpha, alpha_floor)), c};
   }
   return k;
 }
@@ -422,7 +430,8 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   checkProblem(problem);
   const bool adaptive = params.kernel_schedule == KernelSchedule::Adaptive;
   const ShapeEstimator* shapes =
-      adaptive ? &shapeEstimatorFor(params.adaptive_alpha_min, params.adaptive_alpha_step, params.adaptive_truncation)
+      adaptive ? &shapeEstimatorFor(params.adaptive_alpha_min, params.adaptive_alpha_max, params.adaptive_alpha_step,
+                                  params.adaptive_truncation)
                : nullptr;
   const double alpha_end = adaptive ? params.adaptive_alpha_min : params.kernel_alpha;
   const std::vector<geometry::Pose2> given = problem.poses;
@@ -438,7 +447,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     const bool last = floor <= alpha_end || floor < kLowestGraduatedAlpha;
     if (last) floor = alpha_end;
     bool limited = !last;  // gnc: the stages go on down to the target
-    kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, limited)
+    kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, 1.0, limited)
                        : uniformKernels({floor, params.kernel_c});
     const OptimizationReport s = optimizeWithKernels(problem, stage, kernels);
     if (k == 0)
@@ -476,7 +485,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   if (adaptive)
   {
     bool limited = false;
-    kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, limited);
+    kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, 2.0, limited);
   }
   // Least squares on the kept edges. An edge the stages left switched off that agrees with
   // that result is kept after all, and the solve is repeated, until the kept set is stable.

@@ -66,6 +66,10 @@ struct OptimizationReport
 /** chi2 = sum over edges of e^T Omega e at the problem's poses. */
 double graphChi2(const GraphProblem& problem);
 
+/** The robust cost sum of c^2 rho(r) (robustified edges, under their kind's kernel) and r^2 / 2
+ * (the others) at the problem's poses: what the optimizer minimizes. */
+double robustCost(const GraphProblem& problem, const KindKernels& kernels);
+
 /** Throws std::invalid_argument if an edge names a pose out of range or joins a pose to
  * itself, or the per-pose vectors differ in size. */
 void checkProblem(const GraphProblem& problem);

@@ -48,10 +48,10 @@ void GraphOptimizerParams::check() const
     throw std::invalid_argument("graph_optimizer: gnc_stage_iterations must be >= 1");
   if (!(gnc_alpha_step > 0 && gnc_alpha_step <= 10))
     throw std::invalid_argument("graph_optimizer: gnc_alpha_step must be in (0, 10]");
-  if (!(adaptive_alpha_min >= -100 && adaptive_alpha_min < 2))
-    throw std::invalid_argument("graph_optimizer: adaptive_alpha_min must be in [-100, 2)");
-  if (!(adaptive_alpha_step >= 0.01 && adaptive_alpha_step <= 2 - adaptive_alpha_min))
-    throw std::invalid_argument("graph_optimizer: adaptive_alpha_step must be in [0.01, 2 - adaptive_alpha_min]");
+  if (!(adaptive_alpha_min >= -100 && adaptive_alpha_min <= adaptive_alpha_max && adaptive_alpha_max <= 2))
+    throw std::invalid_argument("graph_optimizer: adaptive_alpha_min and adaptive_alpha_max must satisfy -100 <= min <= max <= 2");
+  if (!(adaptive_alpha_step >= 0.01 && adaptive_alpha_step <= 10))
+    throw std::invalid_argument("graph_optimizer: adaptive_alpha_step must be in [0.01, 10]");
   if (!(adaptive_truncation > 1 && adaptive_truncation <= 1000))
     throw std::invalid_argument("graph_optimizer: adaptive_truncation must be in (1, 1000]");
   if (!(switched_off_weight >= 0 && switched_off_weight < 1))
@@ -88,6 +88,7 @@ void GraphOptimizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBas
   MRPT_LOAD_CONFIG_VAR(gnc_alpha_step, double, c, s);
   gnc_stage_iterations = c.read_uint64_t(s, "gnc_stage_iterations", gnc_stage_iterations);
   MRPT_LOAD_CONFIG_VAR(adaptive_alpha_min, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(adaptive_alpha_max, double, c, s);
   MRPT_LOAD_CONFIG_VAR(adaptive_alpha_step, double, c, s);
   MRPT_LOAD_CONFIG_VAR(adaptive_truncation, double, c, s);
   MRPT_LOAD_CONFIG_VAR(switched_off_weight, double, c, s);
@@ -121,6 +122,7 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   c.write(s, "gnc_alpha_step", gnc_alpha_step, -1, -1, "gnc, adaptive: the shape's bound falls by this each stage");
   c.write(s, "gnc_stage_iterations", gnc_stage_iterations, -1, -1, "gnc, adaptive: LM iterations per stage");
   c.write(s, "adaptive_alpha_min", adaptive_alpha_min, -1, -1, "adaptive: the lowest shape estimated");
+  c.write(s, "adaptive_alpha_max", adaptive_alpha_max, -1, -1, "adaptive: the highest shape estimated");
   c.write(s, "adaptive_alpha_step", adaptive_alpha_step, -1, -1, "adaptive: grid step of the shape estimate");
   c.write(s, "adaptive_truncation", adaptive_truncation, -1, -1,
           "adaptive: the residual density is truncated at this many scales");

@@ -45,8 +45,10 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
    * less convex, problem's basin); the least-squares solve on the edges kept gets
    * max_iterations. */
   size_t gnc_stage_iterations = 3;
-  /** adaptive: the lowest shape estimated, and the grid step of the estimate. */
+  /** adaptive: the shapes estimated lie in [adaptive_alpha_min, adaptive_alpha_max], on a grid
+   * of adaptive_alpha_step. */
   double adaptive_alpha_min = -10.0;
+  double adaptive_alpha_max = 0.0;
   double adaptive_alpha_step = 0.1;
   /** adaptive: the density of the residuals over the scale is truncated at this many scales
    * (so that it can be normalized for every shape). */
