@@ -341,12 +341,14 @@ OptimizationReport optimizeWithKernels(GraphProblem& problem, const GraphOptimiz
 /** Adaptive: a kind with fewer robustified edges than this keeps the configured kernel. */
 constexpr size_t kAdaptiveMinEdges = 10;
 
-/** Per edge kind with robustified edges: the scale kernel_c times the robust scale of its
- * residuals at the problem's poses, and the shape that fits them best, within
- * [alpha_floor, alpha_cap] (KernelSchedule::Adaptive). `limited` tells whether the floor held a
- * shape. */
+/** Per edge kind with robustified edges: the shape that fits its residuals at the problem's
+ * poses best, within [alpha_floor, alpha_cap], and the scale kernel_c, times the robust scale
+ * of the residuals if `scaled` (KernelSchedule::Adaptive: the stages keep kernel_c, since from
+ * a poor guess every residual is large and a wide scale would let the false edges pull; the
+ * kernels at the result are scaled). `limited` tells whether the floor held a shape. */
 KindKernels estimateKernels(const GraphProblem& p, const GraphOptimizerParams& params,
-                            const ShapeEstimator& shapes, double alpha_floor, double alpha_cap, bool& limited)
+                            const ShapeEstimator& shapes, double alpha_floor, double alpha_cap, bool scaled,
+                            bool& limited)
 {
   const std::vector<double> r = robustResiduals(p);
   std::array<std::vector<double>, kEdgeKindCount> by_kind;
@@ -362,7 +364,8 @@ KindKernels estimateKernels(const GraphProblem& p, const GraphOptimizerParams& p
     const bool estimated = by_kind[kind].size() >= kAdaptiveMinEdges;
     // The information matrices bound the precision: residuals tighter than they say (exact
     // simulated measurements) do not shrink the scale below kernel_c.
-    const double c = estimated ? params.kernel_c * std::max(1.0, robustResidualScale(by_kind[kind])) : params.kernel_c;
+    const double c =
+        estimated && scaled ? params.kernel_c * std::max(1.0, robustResidualScale(by_kind[kind])) : params.kernel_c;
     const double alpha = estimated ? shapes.estimate(by_kind[kind], c).alpha : params.kernel_alpha;
     limited = limited || alpha < alpha_floor;
     k[kind] = {std::min(alpha_cap, std::max(alpha, alpha_floor)), c};
@@ -447,7 +450,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     const bool last = floor <= alpha_end || floor < kLowestGraduatedAlpha;
     if (last) floor = alpha_end;
     bool limited = !last;  // gnc: the stages go on down to the target
-    kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, 1.0, limited)
+    kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, 1.0, false, limited)
                        : uniformKernels({floor, params.kernel_c});
     const OptimizationReport s = optimizeWithKernels(problem, stage, kernels);
     if (k == 0)
@@ -485,7 +488,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   if (adaptive)
   {
     bool limited = false;
-    kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, 2.0, limited);
+    kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, 2.0, true, limited);
   }
   // Least squares on the kept edges. An edge the stages left switched off that agrees with
   // that result is kept after all, and the solve is repeated, until the kept set is stable.
