@@ -38,9 +38,8 @@ int main(int argc, char** argv)
     swslam::app::RegenReport report;
     const auto grid = swslam::app::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
                                             params.map, params.carmen, &report);
-    const swslam::map::RenderInput render = swslam::app::renderInputOf(run_data);
     const auto problems = swslam::map::writeMapOutputs(output.getValue(), grid, params.map,
-                                                  no_render.getValue() ? nullptr : &render);
+                                                       swslam::app::overlayOf(run_data), !no_render.getValue());
     for (const auto& p : problems) std::cerr << "swslam-regen-map: " << p.file << ": " << p.message << "\n";
     std::cout << report.inserted << " of " << report.nodes << " node scans inserted at "
               << params.map.resolution << " m; map files in " << output.getValue() << "/\n";
