@@ -58,7 +58,7 @@ void drawSymbol(mrpt::img::CImage& img, const LegendEntry& e, int u0, int vc, in
       for (int u = u0; u < u0 + length; u += 8)
         img.filledRectangle(u, vc - half, std::min(u + 4, u0 + length), vc - half + e.width - 1, e.color);
       break;
-    case S::Disc: fillDisc(img, u0 + length / 2, vc, e.width, e.color); break;
+    case S::Dot: fillSquare(img, u0 + length / 2, vc, e.width / 2, e.color); break;
     case S::Start:
       fillDisc(img, u0 + length / 2, vc, 7, colors::kText);
       fillDisc(img, u0 + length / 2, vc, 5, e.color);

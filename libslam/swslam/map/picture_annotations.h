@@ -94,7 +94,7 @@ struct LegendEntry
   {
     Line,    ///< a line of `width` px
     Dashed,  ///< a dashed line
-    Disc,    ///< a small disc (keyframes)
+    Dot,     ///< a small square `width` px wide (keyframes)
     Start,   ///< the start mark
     End,     ///< the end mark
     Swatch   ///< a filled square with a thin border (map cells)

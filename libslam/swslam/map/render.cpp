@@ -56,33 +56,38 @@ mrpt::opengl::CSetOfTriangles::Ptr ribbons(const std::vector<Segment>& segments,
   return obj;
 }
 
-/** How each kind of drawn line looks, bottom to top. */
+/** How each kind of drawn line looks, bottom to top: along a trajectory the edges are nearly
+ * collinear, so each layer is narrower than the one below and shows as a stripe of its own
+ * (light-orange trajectory, teal dense-neighbour edges, dark keyframe squares, blue
+ * consecutive edges); loops and switched-off edges on top. */
 struct Layer
 {
   const char* label;
   mrpt::img::TColor color;
   double width_px;
-  bool dashed;
+  LegendEntry::Symbol symbol;
 };
-constexpr size_t kTrajectoryLayer = 0, kSwitchedOffLayer = 5;
-const std::array<Layer, 6> kLayers = {{{"trajectory", mrpt::img::TColor(255, 185, 90), 7, false},
-                                       {"consecutive edge", colors::kConsecutive, 2, false},
-                                       {"dense neighbour edge", colors::kNeighbour, 1.5, false},
-                                       {"prior edge", colors::kPrior, 2, false},
-                                       {"loop edge", colors::kLoop, 3, false},
-                                       {"switched-off edge", colors::kSwitchedOff, 2.5, true}}};
+using S = LegendEntry::Symbol;
+constexpr size_t kTrajectoryLayer = 0, kKeyframeLayer = 2, kLoopLayer = 5, kSwitchedOffLayer = 6;
+const std::array<Layer, 7> kLayers = {{{"trajectory", mrpt::img::TColor(255, 185, 90), 8, S::Line},
+                                       {"dense neighbour edge", colors::kNeighbour, 5, S::Line},
+                                       {"keyframe", colors::kKeyframe, 3, S::Dot},
+                                       {"consecutive edge", colors::kConsecutive, 1.5, S::Line},
+                                       {"prior edge", colors::kPrior, 2, S::Line},
+                                       {"loop edge (nodes ringed)", colors::kLoop, 3, S::Line},
+                                       {"switched-off edge", colors::kSwitchedOff, 2.5, S::Dashed}}};
 
 size_t layerOf(const OverlayEdge& e)
 {
   if (e.switched_off) return kSwitchedOffLayer;
   switch (e.look)
   {
-    case EdgeLook::Consecutive: return 1;
-    case EdgeLook::DenseNeighbour: return 2;
-    case EdgeLook::Prior: return 3;
-    case EdgeLook::Loop: return 4;
+    case EdgeLook::Consecutive: return 3;
+    case EdgeLook::DenseNeighbour: return 1;
+    case EdgeLook::Prior: return 4;
+    case EdgeLook::Loop: return kLoopLayer;
   }
-  return 1;
+  return 3;
 }
 
 /** The GL picture of the plot area. */
@@ -106,7 +111,7 @@ mrpt::img::CImage renderPlot(const mrpt::maps::COccupancyGridMap2D& grid, const 
   // orthographic depth range is wide, and ribbons close to the map plane lose the depth test.
   for (size_t i = 0; i < kLayers.size(); i++)
     scene.insert(ribbons(lines[i], kLayers[i].width_px * view.metres_per_pixel, (0.1 + 0.05 * i) * zoom,
-                         kLayers[i].color, kLayers[i].dashed ? 9 * view.metres_per_pixel : 0));
+                         kLayers[i].color, kLayers[i].symbol == S::Dashed ? 9 * view.metres_per_pixel : 0));
 
   mrpt::opengl::CCamera cam;
   cam.setOrthogonal(true);
@@ -159,20 +164,27 @@ mrpt::img::CImage renderMapImage(const mrpt::maps::COccupancyGridMap2D& grid, co
     lines[kTrajectoryLayer].emplace_back(overlay.trajectory[i - 1].translation(), overlay.trajectory[i].translation());
   for (const OverlayEdge& edge : overlay.edges)
     lines[layerOf(edge)].emplace_back(overlay.nodes[edge.from].translation(), overlay.nodes[edge.to].translation());
+  // Keyframes: squares of 3 x 3 px (a segment as long as its ribbon is wide).
+  const double half = 0.5 * kLayers[kKeyframeLayer].width_px * view.metres_per_pixel;
+  for (const auto& p : overlay.nodes)
+    lines[kKeyframeLayer].emplace_back(mrpt::math::TPoint2D(p.x() - half, p.y()), mrpt::math::TPoint2D(p.x() + half, p.y()));
 
   char title[160];
   std::snprintf(title, sizeof(title), "Map (%.3g m cells), trajectory and pose graph: %zu keyframes, %zu edges",
                 grid.getResolution(), overlay.nodes.size(), overlay.edges.size());
   mrpt::img::CImage img = framedCanvas(view, title);
   img.drawImage(view.left, view.top, renderPlot(grid, view, lines));
-  for (const auto& p : overlay.nodes)
-  {
-    const auto q = view.toImage(p.x(), p.y());
-    fillDisc(img, static_cast<int>(std::floor(q.x)), static_cast<int>(std::floor(q.y)), 2, colors::kKeyframe);
-  }
+  // The nodes of loop edges ringed (a loop between nodes a few metres apart is a few pixels
+  // long, and often lies along the trajectory), under the start and end marks.
+  for (const OverlayEdge& edge : overlay.edges)
+    if (layerOf(edge) == kLoopLayer)
+      for (const size_t n : {edge.from, edge.to})
+      {
+        const auto q = view.toImage(overlay.nodes[n].x(), overlay.nodes[n].y());
+        img.drawCircle(static_cast<int>(std::floor(q.x)), static_cast<int>(std::floor(q.y)), 13, colors::kLoop, 1);
+      }
   drawStartAndEnd(img, view, overlay.trajectory);
 
-  using S = LegendEntry::Symbol;
   std::vector<LegendEntry> legend = mapLegend();
   legend.erase(legend.begin() + 3, legend.end());  // free, occupied, unknown
   for (size_t i = 0; i < kLayers.size(); i++)
@@ -181,10 +193,8 @@ mrpt::img::CImage renderMapImage(const mrpt::maps::COccupancyGridMap2D& grid, co
     const Layer& l = kLayers[i];
     std::string label = l.label;
     if (i != kTrajectoryLayer) label += " (" + std::to_string(lines[i].size()) + ")";
-    legend.push_back({label, l.color, l.dashed ? S::Dashed : S::Line, std::max(2, static_cast<int>(l.width_px))});
+    legend.push_back({label, l.color, l.symbol, std::max(2, static_cast<int>(l.width_px))});
   }
-  if (!overlay.nodes.empty())
-    legend.push_back({"keyframe (" + std::to_string(overlay.nodes.size()) + ")", colors::kKeyframe, S::Disc, 2});
   if (!overlay.trajectory.empty())
   {
     legend.push_back({"start", colors::kStart, S::Start, 0});

@@ -22,9 +22,10 @@ struct RenderLayout
 
 /** Renders `grid` seen from above (orthographic, north up, framing the observed area, the
  * trajectory and the nodes) into a width x height image: the trajectory as a wide light orange
- * band, above it the graph's edges by kind (consecutive blue, dense neighbour teal, prior brown,
- * switched-off dashed red, loops magenta on top), keyframes as dark dots, the start and end
- * marks, axes in metres, a scale bar and a legend naming each kind drawn with its count.
+ * band, above it, each narrower, dense-neighbour edges (teal), keyframes (dark squares) and
+ * consecutive edges (blue), then prior edges (brown), loop edges (magenta, their nodes ringed)
+ * and switched-off edges (dashed red), the start and end marks, axes in metres, a scale bar and
+ * a legend naming each kind drawn with its count.
  * `height` 0 makes the plot as tall as the observed area needs (between half the plot's width
  * and its width). Throws std::invalid_argument for an edge index out of range or a size outside
  * [200, 8192],

@@ -60,6 +60,15 @@ TEST(MapRender, DrawsEdgesByKindOverTheTrajectoryWithMarksScaleBarAndLegend)
   EXPECT_GT(at(2, 3, colors::kConsecutive), 3u);
   EXPECT_GT(at(2, 4, colors::kNeighbour) + at(2, 4, colors::kConsecutive), 0u);
   EXPECT_GT(test::countNear(img, colors::kSwitchedOff), 100u);
+  // The loop's nodes ringed in magenta around the start and end marks (the ring's top arc,
+  // above the marks and the nearly horizontal loop edge); the switched-off loop's (node 1) not.
+  auto ring = [&](size_t n) {
+    const int u = int(f.u(o.nodes[n].x())), v = int(f.v(o.nodes[n].y()));
+    return test::countNear(img, colors::kLoop, u - 8, v - 16, u + 8, v - 10);
+  };
+  EXPECT_GT(ring(0), 5u);
+  EXPECT_GT(ring(6), 5u);
+  EXPECT_EQ(ring(1), 0u);
   EXPECT_GT(test::countNear(img, mrpt::img::TColor(255, 185, 90), 0, 0, 1 << 30, 1 << 30, 20), 200u);  // band
 
   // Scale bar true to the walls; the legend shows each kind drawn.
