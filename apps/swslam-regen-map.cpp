@@ -9,6 +9,7 @@
 #include <swslam/map/outputs.h>
 #include <swslam/system/config.h>
 
+#include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv)
@@ -33,8 +34,12 @@ int main(int argc, char** argv)
     for (size_t k = 0; k < load.skipped_lines; ++k)
       std::cerr << "swslam-regen-map: graph.graph line " << load.skipped_line_numbers[k]
                 << " skipped: " << load.skip_reasons[k] << "\n";
+    run_data.switched_off = load.switched_off;
     run_data.keyframes = swslam::common::readTum(run.getValue() + "/keyframes.tum");
-    run_data.trajectory = run_data.keyframes;
+    // The pictures draw the run's every-scan trajectory when it is there, else the keyframes.
+    const std::string every_scan = run.getValue() + "/trajectory.tum";
+    run_data.trajectory = std::filesystem::is_regular_file(every_scan) ? swslam::common::readTum(every_scan)
+                                                                       : run_data.keyframes;
     swslam::app::RegenReport report;
     const auto grid = swslam::app::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
                                             params.map, params.carmen, &report);

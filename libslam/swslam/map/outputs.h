@@ -1,6 +1,7 @@
 #pragma once
-// Every map output of a run, written into one directory: map.gridmap.gz, map.png,
-// map.yaml + map.pgm, map.bt and render.png.
+// Every map output of a run, written into one directory: map.gridmap.gz, map.png (picture of
+// the grid with the trajectory), map.yaml + map.pgm, map.bt and render.png (the same with the
+// pose graph, MRPT OpenGL).
 
 #include <swslam/map/params.h>
 #include <swslam/map/overlay.h>
