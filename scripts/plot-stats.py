@@ -151,18 +151,28 @@ def fig7(plt, cols, x, xlabel):
     1e5) would flatten a linear axis. Full optimizations are drawn apart, as labelled stars."""
     matched = [s in ("match", "searched") for s in cols["source"]]
     full = [f == 1 for f in cols["full_optimization"]]
+    # The column carries the latest optimization's sum forward: the scans after a full
+    # optimization repeat its sum until the next optimization changes it.
+    from_full, last = [], None
+    for v, f in zip(cols["active_sq_residuals"], full):
+        last = v if f else (last if last is not None and v == last else None)
+        from_full.append(last is not None)
     positive = lambda values, keep: [v if k and v > 0 else math.nan for v, k in zip(values, keep)]
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6.5),
                                       gridspec_kw={"height_ratios": [3, 2]})
     top.set_yscale("log")
-    top.plot(x, positive(cols["active_sq_residuals"], [not f for f in full]), lw=0.8,
+    top.plot(x, positive(cols["active_sq_residuals"], [not f for f in from_full]), lw=0.8,
              color="tab:blue", label="graph, sliding window: sum of w r^2 (eq. 11)")
     fx = [xi for xi, f in zip(x, full) if f]
     fy = [v for v, f in zip(cols["active_sq_residuals"], full) if f]
     if fx:
         top.plot(fx, [max(v, 1e-12) for v in fy], "*", ms=11, color="tab:red",
                  label="graph, full optimization (whole graph)")
+        labelled = -math.inf  # one label where stars crowd (within 4% of the axis)
         for xi, v in zip(fx, fy):
+            if xi - labelled < 0.04 * (max(x) - min(x)):
+                continue
+            labelled = xi
             top.annotate(f"{v:.3g}", (xi, max(v, 1e-12)), textcoords="offset points",
                          xytext=(-6, -4), ha="right", va="top", fontsize=8, color="tab:red")
     top.plot(x, positive(cols["match_sq_residuals"], matched), lw=0.5, alpha=0.8,
