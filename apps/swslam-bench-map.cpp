@@ -30,10 +30,9 @@ int main(int argc, char** argv)
               << swslam::bench::formatFigures(f);
     if (!output.getValue().empty())
     {
-      swslam::map::RenderInput render;
-      render.trajectory = data.truth;
-      for (const auto& problem :
-           swslam::map::writeMapOutputs(output.getValue(), builder.snapshot(), params, &render))
+      swslam::map::Overlay overlay;
+      overlay.trajectory = data.truth;
+      for (const auto& problem : swslam::map::writeMapOutputs(output.getValue(), builder.snapshot(), params, overlay))
         std::cerr << "swslam-bench-map: " << problem.file << ": " << problem.message << "\n";
     }
     return 0;

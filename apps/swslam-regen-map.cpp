@@ -9,6 +9,7 @@
 #include <swslam/map/outputs.h>
 #include <swslam/system/config.h>
 
+#include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv)
@@ -33,14 +34,17 @@ int main(int argc, char** argv)
     for (size_t k = 0; k < load.skipped_lines; ++k)
       std::cerr << "swslam-regen-map: graph.graph line " << load.skipped_line_numbers[k]
                 << " skipped: " << load.skip_reasons[k] << "\n";
+    run_data.switched_off = load.switched_off;
     run_data.keyframes = swslam::common::readTum(run.getValue() + "/keyframes.tum");
-    run_data.trajectory = run_data.keyframes;
+    // The pictures draw the run's every-scan trajectory when it is there, else the keyframes.
+    const std::string every_scan = run.getValue() + "/trajectory.tum";
+    run_data.trajectory = std::filesystem::is_regular_file(every_scan) ? swslam::common::readTum(every_scan)
+                                                                       : run_data.keyframes;
     swslam::app::RegenReport report;
     const auto grid = swslam::app::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
                                             params.map, params.carmen, &report);
-    const swslam::map::RenderInput render = swslam::app::renderInputOf(run_data);
     const auto problems = swslam::map::writeMapOutputs(output.getValue(), grid, params.map,
-                                                  no_render.getValue() ? nullptr : &render);
+                                                       swslam::app::overlayOf(run_data), !no_render.getValue());
     for (const auto& p : problems) std::cerr << "swslam-regen-map: " << p.file << ": " << p.message << "\n";
     std::cout << report.inserted << " of " << report.nodes << " node scans inserted at "
               << params.map.resolution << " m; map files in " << output.getValue() << "/\n";

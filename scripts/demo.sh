@@ -15,5 +15,5 @@ build/apps/swslam --config config/default.ini --input "$log.rawlog" --output "$o
 if /usr/bin/python3 -c 'import matplotlib' 2> /dev/null; then
   /usr/bin/python3 scripts/plot-stats.py "$out/stats.csv" "$out"
 fi
-echo "Map picture: $out/map.png and $out/render.png (map, trajectory, graph)"
+echo "Map pictures: $out/map.png (map, trajectory, start and end) and $out/render.png (the same with the pose graph)"
 echo "Table I summary: $out/summary.md; per-scan figures: $out/stats.csv (plots: $out/fig6.png, $out/fig7.png)"

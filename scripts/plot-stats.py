@@ -7,8 +7,9 @@ Usage: python3 scripts/plot-stats.py RUN_DIR/stats.csv OUT_DIR [--x time|scan]
                     optimization, map construction (the last two only at the scans that
                     gave their thread work)
   OUT_DIR/fig7.png  sum of active squared residuals of the latest graph optimization (eq. 11;
-                    above, with the scan matches' own sum and the scans with accepted loop
-                    edges marked) and the number of valid rays (below)
+                    above, log scale, with the scan matches' own sum, the full optimizations
+                    as red stars labelled with their value and the scans with accepted loop
+                    edges as purple lines) and the number of valid rays (below)
 
 stats.csv has a header line and one comma-separated row per input scan:
   scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,
@@ -145,24 +146,51 @@ def fig6(plt, cols, x, xlabel):
 
 
 def fig7(plt, cols, x, xlabel):
+    """Log scale above: the graph's sum (about 1e4 on lake-short) and the scan matches' (about
+    0.3 m^2) differ by orders of magnitude, and a full optimization's sum (all edges active,
+    1e5) would flatten a linear axis. Full optimizations are drawn apart, as labelled stars."""
     matched = [s in ("match", "searched") for s in cols["source"]]
-    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6))
-    top.plot(x, cols["active_sq_residuals"], lw=0.8, label="graph: sum of w r^2 (eq. 11)")
-    top.plot(x, only_where(cols["match_sq_residuals"], matched), lw=0.5, alpha=0.7,
-             label="scan match: sum of squared distances [m^2]")
-    top.set_ylabel("sum of active squared residuals")
-    top.legend(fontsize=8, loc="upper left")
+    full = [f == 1 for f in cols["full_optimization"]]
+    # The column carries the latest optimization's sum forward: the scans after a full
+    # optimization repeat its sum until the next optimization changes it.
+    from_full, last = [], None
+    for v, f in zip(cols["active_sq_residuals"], full):
+        last = v if f else (last if last is not None and v == last else None)
+        from_full.append(last is not None)
+    positive = lambda values, keep: [v if k and v > 0 else math.nan for v, k in zip(values, keep)]
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6.5),
+                                      gridspec_kw={"height_ratios": [3, 2]})
+    top.set_yscale("log")
+    top.plot(x, positive(cols["active_sq_residuals"], [not f for f in from_full]), lw=0.8,
+             color="tab:blue", label="graph, sliding window: sum of w r^2 (eq. 11)")
+    fx = [xi for xi, f in zip(x, full) if f]
+    fy = [v for v, f in zip(cols["active_sq_residuals"], full) if f]
+    if fx:
+        top.plot(fx, [max(v, 1e-12) for v in fy], "*", ms=11, color="tab:red",
+                 label="graph, full optimization (whole graph)")
+        labelled = -math.inf  # one label where stars crowd (within 4% of the axis)
+        for xi, v in zip(fx, fy):
+            if xi - labelled < 0.04 * (max(x) - min(x)):
+                continue
+            labelled = xi
+            top.annotate(f"{v:.3g}", (xi, max(v, 1e-12)), textcoords="offset points",
+                         xytext=(-6, -4), ha="right", va="top", fontsize=8, color="tab:red")
+    top.plot(x, positive(cols["match_sq_residuals"], matched), lw=0.5, alpha=0.8,
+             color="tab:orange", label="scan match: sum of squared distances [m^2]")
+    top.set_ylabel("sum of squared residuals (log)")
     loops = [xi for xi, n in zip(x, cols["loops"]) if n > 0]
-    for xi in loops:
-        top.axvline(xi, color="tab:red", lw=0.6, alpha=0.5)
+    for i, xi in enumerate(loops):
+        top.axvline(xi, color="tab:purple", lw=0.6, alpha=0.5,
+                    label="scan with accepted loop edges" if i == 0 else None)
+    top.legend(fontsize=8, loc="best", framealpha=0.9)
     top.set_title(f"{sum(matched)} of {len(matched)} scans matched; loop edges accepted: "
-                  f"{sum(cols['loops'])} (red lines)", fontsize=9)
+                  f"{sum(cols['loops'])}; full optimizations: {len(fx)}", fontsize=9)
     bottom.plot(x, cols["valid_rays"], lw=0.6, color="tab:green")
     bottom.set_ylabel("valid rays")
     bottom.set_xlabel(xlabel)
     for ax in (top, bottom):
-        ax.grid(alpha=0.3)
-    fig.suptitle("Sum of active squared residuals (above) vs. number of valid rays (below)")
+        ax.grid(alpha=0.3, which="major")
+    fig.suptitle("Sum of active squared residuals (above, log scale) vs. number of valid rays (below)")
     fig.tight_layout()
     return fig
 

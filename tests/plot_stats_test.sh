@@ -51,6 +51,31 @@ assert a.ndim == 3 and a.shape[0] > 300 and a.shape[1] > 600, a.shape
 done
 grep -q "wrote $out/fig7.png" "$work/log.txt"
 
+# Fig. 7 stays readable when a full optimization's sum dwarfs the rest: a log scale, and the
+# full optimizations drawn apart (stars), out of the sliding window's line with the scans that
+# carry their sum forward.
+"$py" - "$script" "$good" <<'PY'
+import importlib.util, math, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+spec = importlib.util.spec_from_file_location("plot_stats", sys.argv[1])
+m = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(m)
+cols = m.read_stats(sys.argv[2])
+# The second-last scan's full optimization; the last scan carries its sum forward.
+cols["active_sq_residuals"][-2:] = [1e6, 1e6]
+cols["full_optimization"][-2:] = [1, 0]
+fig = m.fig7(plt, cols, cols["scan"], "scan")
+top = fig.axes[0]
+assert top.get_yscale() == "log", top.get_yscale()
+lines = {l.get_label(): l for l in top.get_lines()}
+window = [v for v in lines["graph, sliding window: sum of w r^2 (eq. 11)"].get_ydata() if not math.isnan(v)]
+full = list(lines["graph, full optimization (whole graph)"].get_ydata())
+assert max(window) < 10 and 1e6 in full, (max(window), full)
+assert 1e6 not in window
+PY
+
 # Bad inputs: each fails, names the problem (and the line), writes no figure.
 bad() {  # name expected-message; the csv is on stdin
   cat > "$work/$1.csv"

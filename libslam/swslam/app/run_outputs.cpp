@@ -51,9 +51,9 @@ system::RunSummary summarizeRun(const system::RunResults& results, double wall_t
   return s;
 }
 
-map::RenderInput renderInputOf(const system::RunResults& results)
+map::Overlay overlayOf(const system::RunResults& results)
 {
-  map::RenderInput in;
+  map::Overlay in;
   for (const common::StampedPose& p : results.trajectory) in.trajectory.push_back(p.pose);
   std::unordered_map<graph::PoseGraph::TNodeID, size_t> index;
   for (const auto id : results.graph.nodeIds())
@@ -64,8 +64,18 @@ map::RenderInput renderInputOf(const system::RunResults& results)
   for (size_t i = 0; i < results.graph.edgeCount(); ++i)
   {
     const graph::PoseGraph::Edge& e = results.graph.edge(i);
-    in.edges.emplace_back(index.at(e.from), index.at(e.to));
+    map::EdgeLook look = map::EdgeLook::Consecutive;
+    switch (e.kind)
+    {
+      case graph::EdgeKind::Consecutive: look = map::EdgeLook::Consecutive; break;
+      case graph::EdgeKind::DenseNeighbour: look = map::EdgeLook::DenseNeighbour; break;
+      case graph::EdgeKind::Loop: look = map::EdgeLook::Loop; break;
+      case graph::EdgeKind::OdometryPrior: look = map::EdgeLook::Prior; break;
+    }
+    in.edges.push_back({index.at(e.from), index.at(e.to), look, false});
   }
+  for (const size_t i : results.switched_off)
+    if (i < in.edges.size()) in.edges[i].switched_off = true;
   return in;
 }
 
@@ -80,9 +90,7 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
                                            const map::MapParams& map_params, const std::string& summary,
                                            bool render)
 {
-  const map::RenderInput render_input = renderInputOf(results);
-  std::vector<map::OutputProblem> problems =
-      map::writeMapOutputs(dir, grid, map_params, render ? &render_input : nullptr);
+  std::vector<map::OutputProblem> problems = map::writeMapOutputs(dir, grid, map_params, overlayOf(results), render);
   const std::filesystem::path d(dir);
   auto attempt = [&](const char* file, const std::function<void(const std::string&)>& write) {
     try

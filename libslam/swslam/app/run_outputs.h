@@ -27,7 +27,8 @@ std::vector<std::string> runOutputFiles();
 system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,
                         const std::vector<common::StampedPose>* ground_truth = nullptr, double max_dt = 0.01);
 
-/** The render's input: the every-scan trajectory, the nodes and every graph edge. */
-map::RenderInput renderInputOf(const system::RunResults& results);
+/** What the map pictures draw: the every-scan trajectory, the nodes and every graph edge by
+ * kind, those in `results.switched_off` marked. */
+map::Overlay overlayOf(const system::RunResults& results);
 
 }  // namespace swslam::app

@@ -22,6 +22,7 @@ struct EdgeRecord
   PoseGraph::TNodeID from, to;
   mrpt::poses::CPosePDFGaussianInf z;
   EdgeKind kind;
+  bool switched_off;
 };
 
 /** Reads exactly `n` numbers and nothing else; false on any parse error. strtod reads
@@ -115,7 +116,7 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
         I.asEigen() << v[3], v[4], v[7], v[4], v[5], v[8], v[7], v[8], v[6];
       mrpt::poses::CPosePDFGaussianInf z(mrpt::poses::CPose2D(v[0], v[1], v[2]), I);
       edges.push_back({line, PoseGraph::TNodeID(id1), PoseGraph::TNodeID(id2), z,
-                       edgeKindOf(comment, id1, id2)});
+                       edgeKindOf(comment, id1, id2), comment.find("switched_off") != std::string::npos});
     }
     else if (key == "FIX")
     {
@@ -134,6 +135,7 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
     try
     {
       graph.addEdge(e.from, e.to, e.z, e.kind);
+      if (e.switched_off) rep.switched_off.push_back(graph.edgeCount() - 1);
     }
     catch (const std::invalid_argument& ex)
     {

@@ -11,7 +11,7 @@
 // (dx, dy, dtheta) is the pose of `to` in the frame of `from`. Text after '#' or '|' is a
 // comment; an edge comment "kind=<name>" (consecutive, dense_neighbour, loop,
 // odometry_prior) sets the edge kind, otherwise to == from + 1 is consecutive and any other
-// edge a loop.
+// edge a loop; "switched_off" in it lists the edge in GraphLoadReport::switched_off.
 //
 // Skipped with a count and the line numbers: blank and comment lines (not counted), lines
 // with an unknown keyword or unparseable fields, EQUIV lines (node merging is not
@@ -38,6 +38,7 @@ struct GraphLoadReport
   size_t skipped_lines = 0;
   std::vector<size_t> skipped_line_numbers;  ///< all of them, 1-based
   std::vector<std::string> skip_reasons;     ///< parallel to skipped_line_numbers
+  std::vector<size_t> switched_off;          ///< indices of the edges marked " switched_off"
 };
 
 /** Reads a graph from `in`; `source` names it in messages. */

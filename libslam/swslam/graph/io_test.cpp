@@ -147,9 +147,11 @@ TEST(GraphIo, AnEdgeTheKernelSwitchedOffIsMarkedAndStillLoadsWithItsKind)
   const std::string text = out.str();
   EXPECT_NE(text.find("# kind=loop switched_off\n"), std::string::npos) << text;
   EXPECT_NE(text.find("# kind=consecutive\n"), std::string::npos) << text;
-  const auto back = read(text);
+  swslam::graph::GraphLoadReport rep;
+  const auto back = read(text, &rep);
   ASSERT_EQ(back.edgeCount(), 2u);
   EXPECT_EQ(back.edge(1).kind, swslam::graph::EdgeKind::Loop);
+  EXPECT_EQ(rep.switched_off, std::vector<size_t>{1});
   mrpt::graphs::CNetworkOfPoses2DInf mrpt_graph;
   const std::string path = swslam::test::tempDir("graph_io_off") + "/off.g2o";
   swslam::graph::saveGraph(g, path, {1});

@@ -2,7 +2,6 @@
 
 #include <swslam/common/atomic_file.h>
 
-#include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
@@ -53,15 +52,6 @@ mrpt::maps::COccupancyGridMap2D readGridmap(const std::string& path)
     throw std::runtime_error("'" + path + "' is not an MRPT grid map: " + e.what());
   }
   return grid;
-}
-
-void writeMapPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
-{
-  common::writeAtomically(path, [&](const std::string& tmp) {
-    mrpt::img::CImage img;
-    grid.getAsImage(img, /*verticalFlip=*/false);  // MRPT puts the largest y in row 0
-    if (!img.saveToFile(tmp)) throw std::runtime_error("cannot save image '" + tmp + "'");
-  });
 }
 
 void writeRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& yaml_path,

@@ -1,5 +1,6 @@
 #pragma once
-// Grid map files: MRPT's own serialization, a picture, and the ROS map_server pair.
+// Grid map files: MRPT's own serialization and the ROS map_server pair (the pictures are in
+// map_picture.h and render.h).
 // Every writer writes atomically (swslam/atomic_file.h) and throws std::runtime_error
 // naming the file when it cannot.
 
@@ -13,9 +14,6 @@ namespace swslam::map
 void writeGridmap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path);
 /** Reads a file written by writeGridmap(). Throws std::runtime_error naming the file. */
 mrpt::maps::COccupancyGridMap2D readGridmap(const std::string& path);
-
-/** `map.png`: one pixel per cell, grey = 255 * p(free), north (+y) up. */
-void writeMapPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path);
 
 /** The ROS map_server thresholds and pixel convention. */
 struct RosMapThresholds

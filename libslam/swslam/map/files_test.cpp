@@ -4,6 +4,7 @@
 
 #include <swslam/map/builder.h>
 #include <swslam/map/files.h>
+#include <swslam/map/map_picture.h>
 #include <swslam/map/octomap_export.h>
 #include <swslam/map/outputs.h>
 #include <swslam/map/render.h>
@@ -76,20 +77,6 @@ TEST(MapFiles, GridmapLoadsBackIdentical)
   std::ofstream(dir + "/junk.gz") << "not a map";
   EXPECT_THROW(readGridmap(dir + "/junk.gz"), std::runtime_error);
   EXPECT_THROW(readGridmap(dir + "/missing.gz"), std::runtime_error);
-}
-
-TEST(MapFiles, PngHasOnePixelPerCellNorthUp)
-{
-  auto g = roomMap();
-  // Mark the top-left cell occupied: it must be the image's first pixel.
-  g.setCell(0, static_cast<int>(g.getSizeY()) - 1, 0.0f);
-  const auto dir = test::tempDir("map_png");
-  writeMapPng(g, dir + "/map.png");
-  mrpt::img::CImage img;
-  ASSERT_TRUE(img.loadFromFile(dir + "/map.png", 0));
-  EXPECT_EQ(img.getWidth(), g.getSizeX());
-  EXPECT_EQ(img.getHeight(), g.getSizeY());
-  EXPECT_LT(*img(0, 0), 10);
 }
 
 TEST(MapFiles, RosMapParsesAndLoadsInMrpt)
@@ -189,13 +176,11 @@ TEST(MapFiles, FailedWriteLeavesThePreviousFileIntact)
   using Writer = std::function<void(const mrpt::maps::COccupancyGridMap2D&, const std::string&)>;
   const std::vector<std::pair<std::string, Writer>> writers = {
       {"map.gridmap.gz", [](const auto& m, const auto& p) { writeGridmap(m, p); }},
-      {"map.png", [](const auto& m, const auto& p) { writeMapPng(m, p); }},
+      {"map.png", [](const auto& m, const auto& p) { writeMapPicture(m, Overlay(), p); }},
       {"map.yaml", [](const auto& m, const auto& p) { writeRosMap(m, p, {}); }},
       {"map.bt", [](const auto& m, const auto& p) { writeOctomap(m, p, 0.65, 0.25); }},
       {"render.png", [](const auto& m, const auto& p) {
-         RenderInput r;
-         r.width = 64, r.height = 48;
-         renderMap(m, r, p);
+         renderMap(m, Overlay(), p, 240, 200);
        }},
   };
   for (const auto& [file, write] : writers)
@@ -231,12 +216,11 @@ TEST(MapFiles, WriteMapOutputsWritesEveryFile)
 {
   const auto g = roomMap();
   const auto dir = test::tempDir("map_outputs");
-  RenderInput r;
+  Overlay r;
   r.nodes = {{-5, 0, 0}, {0, 1, 1.2}, {5, -2, 2.8}};
-  r.edges = {{0, 1}, {1, 2}, {0, 2}};
+  r.edges = {{0, 1}, {1, 2}, {0, 2, EdgeLook::Loop}};
   r.trajectory = r.nodes;
-  r.width = 320, r.height = 240;
-  const auto problems = writeMapOutputs(dir, g, MapParams(), &r);
+  const auto problems = writeMapOutputs(dir, g, MapParams(), r);
   for (const auto& p : problems)
   {
     // Without an EGL driver only the render may fail, and it says why.
@@ -247,7 +231,7 @@ TEST(MapFiles, WriteMapOutputsWritesEveryFile)
     EXPECT_TRUE(fs::is_regular_file(dir + "/" + f)) << f;
   if (problems.empty()) EXPECT_TRUE(fs::is_regular_file(dir + "/render.png"));
   // A missing output folder is created; a path that is a file is an error.
-  EXPECT_TRUE(writeMapOutputs(dir + "/new/sub", g, MapParams(), nullptr).empty());
+  EXPECT_TRUE(writeMapOutputs(dir + "/new/sub", g, MapParams(), Overlay(), false).empty());
   EXPECT_TRUE(fs::is_regular_file(dir + "/new/sub/map.png"));
-  EXPECT_THROW(writeMapOutputs(dir + "/map.png", g, MapParams(), nullptr), std::invalid_argument);
+  EXPECT_THROW(writeMapOutputs(dir + "/map.png", g, MapParams(), Overlay(), false), std::invalid_argument);
 }

@@ -1,7 +1,9 @@
 #include <swslam/map/outputs.h>
 
 #include <swslam/map/files.h>
+#include <swslam/map/map_picture.h>
 #include <swslam/map/octomap_export.h>
+#include <swslam/map/render.h>
 
 #include <filesystem>
 #include <functional>
@@ -9,9 +11,8 @@
 
 namespace swslam::map
 {
-std::vector<OutputProblem> writeMapOutputs(const std::string& dir,
-                                           const mrpt::maps::COccupancyGridMap2D& grid,
-                                           const MapParams& params, const RenderInput* render)
+std::vector<OutputProblem> writeMapOutputs(const std::string& dir, const mrpt::maps::COccupancyGridMap2D& grid,
+                                           const MapParams& params, const Overlay& overlay, bool render)
 {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);  // a missing output folder is made
@@ -31,12 +32,12 @@ std::vector<OutputProblem> writeMapOutputs(const std::string& dir,
     }
   };
   attempt("map.gridmap.gz", [&](const std::string& p) { writeGridmap(grid, p); });
-  attempt("map.png", [&](const std::string& p) { writeMapPng(grid, p); });
+  attempt("map.png", [&](const std::string& p) { writeMapPicture(grid, overlay, p); });
   attempt("map.yaml", [&](const std::string& p) {
     writeRosMap(grid, p, RosMapThresholds{params.occupied_thresh, params.free_thresh});
   });
   attempt("map.bt", [&](const std::string& p) { writeOctomap(grid, p, params.occupied_thresh, params.free_thresh); });
-  if (render) attempt("render.png", [&](const std::string& p) { renderMap(grid, *render, p); });
+  if (render) attempt("render.png", [&](const std::string& p) { renderMap(grid, overlay, p); });
   return problems;
 }
 
