@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# swslam-live against a link that sends random bytes instead of SCIP (the emulator's
-# --garbage-after): the bad data is reported and counted, --duration and the first
-# SIGINT/SIGTERM still end the run cleanly with every output written, a link sending only
-# garbage for --stall-timeout is reconnected, and every scan received before is recorded.
-# Before the fix the app hung inside MRPT's driver (searching the garbage for a reply's echo).
-# Usage: swslam_live_garbage_test.sh SOURCE_DIR BINARY_DIR
+# swslam-live against a faulty link from the SCIP emulator program.
+# - Random bytes instead of SCIP (--garbage-after): the bad data is reported and counted,
+#   --duration and the first SIGINT/SIGTERM still end the run cleanly with every output
+#   written, a link sending only garbage for --stall-timeout is reconnected, and every scan
+#   received is recorded. Before, the app hung inside MRPT's driver (it searches the garbage
+#   for a reply's echo for as long as bytes come).
+# - The sensor stopped (SIGSTOP) for 2.5 s, then continued: a stall, and mapping resumes.
+# Usage: swslam_live_link_faults_test.sh SOURCE_DIR BINARY_DIR
 set -uo pipefail
 src=$1 build=$2
 tmp=$(mktemp -d)
@@ -47,22 +49,27 @@ wait_live() {
   emu_pid=
 }
 
-# check MIN_SCANS: exit 0, every output, the garbage reported and counted, every scan sent
-# (but the last few in flight at the stop) received, recorded and in the trajectory.
+# check MIN_SCANS [clean]: exit 0, every output, the garbage reported and counted (none if
+# `clean`), every scan sent (but the last few in flight at the stop) received, recorded and
+# in the trajectory.
 check() {
-  local min=$1 out=$tmp/$name
+  local min=$1 clean=${2:-} out=$tmp/$name
   [[ $code -eq 0 ]] || bad "exit $code"
   for f in trajectory.tum keyframes.tum graph.graph stats.csv summary.md map.gridmap.gz map.png map.bt recording.rawlog; do
     [[ -e $out/$f ]] || bad "$f missing"
   done
-  grep -q "not SCIP 2.0" "$tmp/$name.err" || bad "the garbage is not reported"
+  if [[ -z $clean ]]; then grep -q "not SCIP 2.0" "$tmp/$name.err" || bad "the garbage is not reported"; fi
   local line sent
   line=$(grep -o '[0-9]* scans received and [0-9]* recorded.*' "$tmp/$name.out")
   read -r got _ _ _ rec _ <<< "$line"
   garbage=$(grep -o '[0-9]* byte(s) of data that was not SCIP 2.0' <<< "$line" | cut -d' ' -f1)
   sent=$(grep -o '[0-9]* scans sent' "$tmp/$name.emu" | cut -d' ' -f1)
   poses=$(grep -vc '^#' "$out/trajectory.tum")
-  ((${garbage:-0} > 0)) || bad "no garbage counted: '$line'"
+  if [[ -z $clean ]]; then
+    ((${garbage:-0} > 0)) || bad "no garbage counted: '$line'"
+  else
+    ((${garbage:-1} == 0)) || bad "garbage counted: '$line'"
+  fi
   ((got >= min && got == rec && poses == got && sent - got <= 4)) ||
     bad "$sent sent, '$line', $poses poses (at least $min expected)"
   echo "$name: exit $code; emulator: $(tail -1 "$tmp/$name.emu" | sed 's/^swslam-scip-emulator: //')"
@@ -89,4 +96,17 @@ for sig in INT TERM; do
   grep -q "stopped by signal" "$tmp/$name.err" || bad "no message"
   if [[ $sig == INT ]]; then check 40; else check 0; fi
 done
+
+# The sensor process stopped for 2.5 s (its connection open, silent), then continued.
+name=stopped
+start_emulator
+start_live --duration 8
+sleep 2
+kill -STOP "$emu_pid"
+sleep 2.5
+kill -CONT "$emu_pid"
+wait_live 14
+grep -Eq ' [1-9][0-9]* stall\(s\)' "$tmp/$name.out" || bad "no stall counted"
+grep -q "receiving scans again" "$tmp/$name.err" || bad "mapping did not resume"
+check 120 clean
 exit $fail
