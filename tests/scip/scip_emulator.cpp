@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <random>
 #include <stdexcept>
 
 namespace swslam::scip
@@ -58,6 +59,8 @@ struct ScipEmulator::Connection
   uint64_t number = 0;
   uint64_t scans = 0;    ///< scans sent on this connection
   bool closing = false;  ///< closes once the output is flushed
+  bool garbage = false;  ///< sends random bytes instead of SCIP (Faults::garbage_after_scans)
+  std::mt19937 random;   ///< its bytes, seeded with the connection's number
   std::string in, out;
 };
 
@@ -134,6 +137,7 @@ void ScipEmulator::setFaults(const Faults& faults)
   std::lock_guard<std::mutex> lock(mutex_);
   faults_ = faults;
   drops_done_ = 0;
+  garbage_done_ = 0;
 }
 
 EmulatorStats ScipEmulator::stats() const
@@ -178,9 +182,30 @@ void ScipEmulator::handleInput(Connection& c)
       const auto it = faults_.replies.find(line.substr(0, 2));
       if (it != faults_.replies.end()) fault = it->second;
     }
+    if (c.garbage) continue;  // commands are heard, not answered
     if (const auto frame = protocol_.reply(line)) c.out += serialize(*frame, fault);
   }
   if (c.in.size() > kMaxCommandLength) c.in.clear();
+}
+
+bool ScipEmulator::startsGarbage(const Connection& c)
+{
+  // The caller holds mutex_.
+  const auto& after = faults_.garbage_after_scans;
+  if (c.garbage || !after || c.scans < *after || garbage_done_ >= faults_.garbage_connections)
+    return false;
+  garbage_done_++;
+  return true;
+}
+
+void ScipEmulator::sendGarbage(Connection& c, uint64_t periods)
+{
+  const size_t n = std::min<uint64_t>(periods, kMaxCatchUp) * kGarbagePerPeriod;
+  if (c.out.size() > kMaxPendingOutput) return;  // the client does not read
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (size_t i = 0; i < n; i++) c.out += static_cast<char>(byte(c.random));
+  std::lock_guard<std::mutex> lock(mutex_);
+  stats_.garbage_bytes += n;
 }
 
 void ScipEmulator::sendScan(Connection& c, uint64_t k)
@@ -215,6 +240,7 @@ void ScipEmulator::sendScan(Connection& c, uint64_t k)
     sent.fault = it->second;
   std::string bytes = serialize(frame, sent.fault);
   c.scans++;
+  c.garbage = startsGarbage(c);  // after this scan
   if (faults_.drop_after_scans && c.scans >= faults_.drop_after_scans &&
       drops_done_ < faults_.drops)
   {
@@ -256,9 +282,9 @@ void ScipEmulator::run()
       pause_ms = faults_.pause_ms;
     }
     if (drop && c.fd >= 0) closeConnection(c, true);
-    const bool measuring = c.fd >= 0 && !c.closing && protocol_.measurement();
+    const bool ticking = c.fd >= 0 && !c.closing && (c.garbage || protocol_.measurement());
     int timeout_ms = -1;
-    if (measuring)
+    if (ticking)
     {
       const auto due = t0 + std::chrono::duration_cast<Clock::duration>(next_k * period);
       const auto wait = std::chrono::ceil<std::chrono::milliseconds>(due - Clock::now());
@@ -285,6 +311,8 @@ void ScipEmulator::run()
         c.fd = fd;
         std::lock_guard<std::mutex> lock(mutex_);
         c.number = ++stats_.connections;
+        c.random.seed(static_cast<std::mt19937::result_type>(c.number));
+        c.garbage = startsGarbage(c);  // from the start
       }
     }
     if (c.fd >= 0 && c.fd == polled && (fds[2].revents & (POLLIN | POLLHUP | POLLERR)))
@@ -306,13 +334,20 @@ void ScipEmulator::run()
       next_k = periodOf(now) + 1;
       continue;
     }
-    if (c.fd >= 0 && !c.closing && protocol_.measurement())
+    if (c.fd >= 0 && !c.closing && c.garbage)
+    {
+      const uint64_t due = periodOf(now);
+      if (due >= next_k) sendGarbage(c, due + 1 - next_k);
+      next_k = std::max(next_k, due + 1);
+    }
+    else if (c.fd >= 0 && !c.closing && protocol_.measurement())
     {
       // Every due period gets its scan, late ones too (as a sensor's buffer would send
       // them); after a stall of more than kMaxCatchUp periods the older ones are lost.
       const uint64_t due = periodOf(now);
       if (due >= next_k + kMaxCatchUp) next_k = due + 1 - kMaxCatchUp;
-      for (; next_k <= due && c.fd >= 0 && !c.closing && protocol_.measurement(); next_k++)
+      for (; next_k <= due && c.fd >= 0 && !c.closing && protocol_.measurement() && !c.garbage;
+           next_k++)
         if (protocol_.scanDue()) sendScan(c, next_k);
     }
     else

@@ -17,6 +17,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -25,6 +26,9 @@ namespace swslam::scip
 {
 /** The ranges of scan k (called on the emulator's thread, for the scans it sends). */
 using ScanSource = std::function<Scan(uint64_t k)>;
+
+/** Random bytes sent per scan period by a connection gone to garbage (a scan frame is ~3.4 kB). */
+constexpr size_t kGarbagePerPeriod = 3400;
 
 /** Malformed or interrupted replies, on purpose. */
 struct Faults
@@ -36,6 +40,11 @@ struct Faults
    * for pause_ms nothing is sent (the scans of that time are lost), then streaming goes on. */
   uint64_t pause_after_scans = 0;
   unsigned pause_ms = 0;
+  /** A connection streams random bytes instead of SCIP once it got this many scans (0: from
+   * its start; unset: never): every scan period about a scan's worth (kGarbagePerPeriod), no
+   * replies, until it closes; for the first `garbage_connections` connections. */
+  std::optional<uint64_t> garbage_after_scans;
+  unsigned garbage_connections = 1;
   /** Faults of the scans sent, by their number (0-based, counted over all connections). */
   std::map<uint64_t, Fault> scans;
   /** Faults of every reply to a command, by its two-letter code ("PP", "MD", "QT", ...;
@@ -70,6 +79,7 @@ struct EmulatorStats
   uint64_t drops = 0;        ///< connections closed by the emulator (faults or dropConnection())
   uint64_t disconnects = 0;  ///< connections closed by the client
   uint64_t scans_sent = 0;
+  uint64_t garbage_bytes = 0;  ///< random bytes sent (Faults::garbage_after_scans)
   bool client_connected = false;
   bool streaming = false;    ///< an MD/ME request is active on the current connection
   std::vector<std::string> commands;  ///< every command line received, in order
@@ -116,6 +126,7 @@ class ScipEmulator
   std::vector<SentScan> history_;   // guarded by mutex_ (ring of opt_.history)
   Faults faults_;                   // guarded by mutex_
   unsigned drops_done_ = 0;         // guarded by mutex_
+  unsigned garbage_done_ = 0;       // guarded by mutex_
   bool stop_requested_ = false;     // guarded by mutex_
   bool drop_requested_ = false;     // guarded by mutex_
   std::thread thread_;
@@ -124,6 +135,9 @@ class ScipEmulator
   void wake();
   void handleInput(Connection& c);
   void sendScan(Connection& c, uint64_t k);
+  /** Whether connection `c`, having got its scans, turns to garbage now (counted). */
+  bool startsGarbage(const Connection& c);
+  void sendGarbage(Connection& c, uint64_t periods);
   void closeConnection(Connection& c, bool by_emulator);
 };
 

@@ -115,6 +115,63 @@ TEST(ScipEmulator, DropsAfterNScansThenAcceptsTheNextConnection)
   EXPECT_EQ(emu.sentScans().back().connection, 2u);
 }
 
+TEST(ScipEmulator, GarbageAfterNScansReplacesScipOnThatConnectionOnly)
+{
+  EmulatorOptions opt;
+  opt.faults.garbage_after_scans = 3;
+  ScipEmulator emu(rampScan, opt);
+  {
+    TestClient client(emu.port());
+    client.send("MD0000108001000");
+    ASSERT_TRUE(client.readFrame(kWait));  // the acknowledgement
+    for (int i = 0; i < 3; i++)
+    {
+      const auto scan = client.readFrame(kWait);
+      ASSERT_TRUE(scan) << i;
+      EXPECT_TRUE(scan->checksums_ok);
+    }
+    ASSERT_TRUE(emu.waitFor([](const EmulatorStats& s) { return s.garbage_bytes >= 4 * kGarbagePerPeriod; },
+                            kWait));
+    client.send("QT");  // heard, not answered
+    EXPECT_FALSE(client.waitClosed(milliseconds(300)));
+    EXPECT_GE(client.pending().size(), kGarbagePerPeriod);
+    EXPECT_EQ(client.pending().find("QT\n00P\n"), std::string::npos);
+  }
+  const auto s = emu.stats();
+  EXPECT_EQ(s.scans_sent, 3u);
+  EXPECT_EQ(s.commands.back(), "QT");
+  EXPECT_EQ(s.garbage_bytes % kGarbagePerPeriod, 0u);
+  TestClient again(emu.port());  // the next connection speaks SCIP
+  again.send("PP");
+  const auto pp = again.readFrame(kWait);
+  ASSERT_TRUE(pp);
+  EXPECT_EQ(pp->frame.echo, "PP");
+  EXPECT_TRUE(pp->checksums_ok);
+}
+
+TEST(ScipEmulator, GarbageFromTheStartForTheFirstConnections)
+{
+  EmulatorOptions opt;
+  opt.faults.garbage_after_scans = 0;
+  opt.faults.garbage_connections = 2;
+  ScipEmulator emu(rampScan, opt);
+  for (uint64_t n = 1; n <= 2; n++)
+  {
+    TestClient client(emu.port());
+    client.send("PP");
+    EXPECT_FALSE(client.waitClosed(milliseconds(300))) << n;
+    EXPECT_GE(client.pending().size(), kGarbagePerPeriod) << n;
+    EXPECT_EQ(client.pending().find("PP\n00P\n"), std::string::npos) << n;
+    ASSERT_TRUE(emu.waitFor([&](const EmulatorStats& s) { return s.connections == n; }, kWait));
+  }
+  TestClient third(emu.port());
+  third.send("PP");
+  const auto pp = third.readFrame(kWait);
+  ASSERT_TRUE(pp);
+  EXPECT_EQ(pp->frame.echo, "PP");
+  EXPECT_EQ(emu.stats().scans_sent, 0u);
+}
+
 TEST(ScipEmulator, DropMidFrameCutsTheLastScan)
 {
   EmulatorOptions opt;

@@ -39,6 +39,12 @@ int main(int argc, char** argv)
                                        "N", cmd);
   TCLAP::ValueArg<unsigned> drops("", "drops", "Connections dropped by --drop-after", false, 1,
                                   "N", cmd);
+  TCLAP::ValueArg<unsigned> garbage_after(
+      "", "garbage-after", "Send random bytes instead of SCIP once a connection got N scans (0: from its start)",
+      false, 0, "N", cmd);
+  TCLAP::ValueArg<unsigned> garbage_connections("", "garbage-connections",
+                                                "Connections that --garbage-after turns to garbage",
+                                                false, 1, "N", cmd);
   TCLAP::MultiArg<std::string> scan_faults(
       "", "scan-fault", "Malformed scan: NUMBER:bad-checksum|truncated-line|wrong-echo", false,
       "N:FAULT", cmd);
@@ -55,6 +61,8 @@ int main(int argc, char** argv)
     opt.port = static_cast<uint16_t>(port.getValue());
     opt.faults.drop_after_scans = drop_after.getValue();
     opt.faults.drops = drops.getValue();
+    if (garbage_after.isSet()) opt.faults.garbage_after_scans = garbage_after.getValue();
+    opt.faults.garbage_connections = garbage_connections.getValue();
     for (const auto& f : scan_faults.getValue())
     {
       const auto [number, fault] = splitPair(f, "scan-fault");
@@ -100,6 +108,7 @@ int main(int argc, char** argv)
     const auto s = emulator.stats();
     std::cout << "swslam-scip-emulator: " << s.connections << " connections, " << s.scans_sent
               << " scans sent, " << s.commands.size() << " commands"
+              << (s.garbage_bytes ? ", " + std::to_string(s.garbage_bytes) + " bytes of garbage" : "")
               << (s.error.empty() ? "" : ", error: " + s.error) << std::endl;
     return s.error.empty() ? 0 : 1;
   }

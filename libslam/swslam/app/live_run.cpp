@@ -60,6 +60,10 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   std::unique_ptr<io::HokuyoLink> link;
   std::unique_ptr<io::RawlogRecorder> recorder;
   std::optional<OutputFolder> folder;
+  steady_clock::time_point t0;  // the run's start, once connected to the system
+  const auto over = [&](steady_clock::time_point now) {
+    return stop.requested() || (opts.duration > 0 && duration<double>(now - t0).count() >= opts.duration);
+  };
   try
   {
     // Checked before the stall timeout becomes whole milliseconds (a cast of a huge or NaN value).
@@ -78,6 +82,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     folder.emplace(opts.output);
     io::HokuyoLinkOptions lo;
     lo.stall_timeout = milliseconds(static_cast<long>(1000 * opts.stall_timeout));
+    lo.stop = [&over] { return over(steady_clock::now()); };  // a poll stuck in garbage returns
     link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
                                         [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
     // The recording replaces a previous one from here on, so do the other outputs; a run that
@@ -93,17 +98,17 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   }
 
   system::SlamSystem slam(params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
-  const auto t0 = steady_clock::now();
+  t0 = steady_clock::now();
   auto last_save = t0, last_status = t0;
   const bool tty = opts.status && isTerminal(stderr);
   // On a terminal a message starts on a new line, below the status line it interrupts.
   SkipReporter skips(err, params.system.max_printed_warnings, tty ? "\nswslam-live: " : "swslam-live: ");
   int code = 0;
-  while (!stop.requested() && slam.error().empty())
+  while (slam.error().empty())
   {
     const auto now = steady_clock::now();
     const double elapsed = duration<double>(now - t0).count();
-    if (opts.duration > 0 && elapsed >= opts.duration) break;
+    if (over(now)) break;
     if (auto scan = link->poll())
     {
       try
@@ -139,6 +144,9 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   if (tty) std::fprintf(stderr, "\n");
   if (stop.requested()) err << "swslam-live: stopped by signal " << stop.signal() << "; writing the outputs\n";
   if (recorder) recorder->flush();
+  // The sensor is let go first: it stops sending while the run finishes.
+  const io::HokuyoLinkStats ls = link->stats();
+  link.reset();
   slam.finish();
   if (!slam.error().empty())
   {
@@ -147,10 +155,10 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   }
   const double wall = duration<double>(steady_clock::now() - t0).count();
   code = std::max(code, save(slam, params, opts, wall, err, true));
-  const io::HokuyoLinkStats& ls = link->stats();
   out << "# swslam-live: " << ls.scans << " scans received and " << (recorder ? recorder->written() : 0)
       << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), "
-      << ls.stalls << " stall(s), " << ls.driver_messages << " driver error message(s)\n";
+      << ls.stalls << " stall(s), " << ls.driver_messages << " driver error message(s), "
+      << ls.garbage_bytes << " byte(s) of data that was not SCIP 2.0\n";
   std::ifstream summary(opts.output + "/summary.md");
   out << summary.rdbuf() << "# outputs in " << opts.output << "/\n";
   return code;

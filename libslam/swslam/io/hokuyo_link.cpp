@@ -80,7 +80,7 @@ HokuyoLink::HokuyoLink(const mrpt::config::CConfigFileBase& cfg, const std::stri
   retry_at_ = steady_clock::now();
 }
 
-HokuyoLink::~HokuyoLink() = default;
+HokuyoLink::~HokuyoLink() { dropDriver(); }
 
 bool HokuyoLink::reachable(std::string& why) const
 {
@@ -91,7 +91,7 @@ bool HokuyoLink::reachable(std::string& why) const
   return false;
 }
 
-bool HokuyoLink::connect()
+bool HokuyoLink::connect(std::string& why)
 {
   std::string ini = ini_text_;
   if (!ip_.empty())
@@ -99,6 +99,7 @@ bool HokuyoLink::connect()
     // Ethernet: our own stream (MRPT's socket can spin on a failed write); the driver is
     // told it talks to a generic stream (a placeholder port name it never opens).
     stream_ = std::make_shared<TcpStream>(ip_, port_, milliseconds(1000), milliseconds(100));
+    stream_->setStop(options_.stop);
     ini = ini_without_link_ + "COM_port_LIN = swslam-tcp\n";
   }
   mrpt::config::CConfigFileMemory mem("[" + section_ + "]\n" + ini);
@@ -108,20 +109,47 @@ bool HokuyoLink::connect()
   driver_->logging_enable_console_output = false;
   driver_->logRegisterCallback([this](std::string_view msg, mrpt::system::VerbosityLevel level,
                                       std::string_view, mrpt::Clock::time_point) {
-    if (level < mrpt::system::LVL_ERROR || dropping_) return;
+    if (level < mrpt::system::LVL_ERROR || dropping_ || stopping()) return;
     stats_.driver_messages++;
     last_driver_message_ = mrpt::system::trim(std::string(msg));
     if (driver_messages_this_outage_++ < kMaxDriverMessages) log_("sensor driver: " + last_driver_message_);
   });
   driver_->loadConfig(mem, section_);
   const size_t before = stats_.driver_messages;
+  if (stream_) garbage_meter_.connected(0);
+  const uint64_t bytes = limitReads(options_.connect_budget);
   static_cast<mrpt::hwdrivers::CGenericSensor&>(*driver_).initialize();  // public in the base
   stats_.connects++;
   last_scan_ = steady_clock::now();
-  if (stats_.driver_messages == before) return true;
+  if (stats_.driver_messages == before)
+  {
+    if (stream_) garbage_meter_.connected(stream_->bytesRead());
+    return true;
+  }
+  why = garbage(bytes);
+  if (why.empty()) why = last_driver_message_;
   // A failed start is not polled (MRPT 2.5 can spin in it): it is replaced.
   dropDriver();
   return false;
+}
+
+uint64_t HokuyoLink::limitReads(milliseconds budget)
+{
+  if (!stream_) return 0;
+  stream_->limitReads(steady_clock::now() + budget);
+  return stream_->bytesRead();
+}
+
+std::string HokuyoLink::garbage(uint64_t bytes_before)
+{
+  // A call cut to stop may have been reading a good scan: those bytes are not judged.
+  if (!stream_ || stopping()) return "";
+  const uint64_t read = stream_->bytesRead();
+  const bool starts = garbage_meter_.noScan(bytes_before, read, stream_->cut());
+  stats_.garbage_bytes = garbage_meter_.bytes();
+  if (!starts) return "";
+  return "the link sends data that is not SCIP 2.0 (" + std::to_string(garbage_meter_.sinceScan(read)) +
+         " bytes without a valid reply or scan: is " + ip_ + ":" + std::to_string(port_) + " a Hokuyo?)";
 }
 
 void HokuyoLink::trouble(const std::string& why)
@@ -160,10 +188,12 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
     }
     try
     {
-      if (!connect())
+      std::string failure;
+      if (!connect(failure))
       {
+        if (stopping()) return nullptr;  // cut short to stop: not a failure
         stats_.errors++;
-        retryLater("initialization failed: " + last_driver_message_);
+        retryLater("initialization failed: " + failure);
         return nullptr;
       }
     }
@@ -186,6 +216,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
   // doProcessSimple(), which then fails at once on every call until the sensor is back.
   auto obs = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
   bool there = false, hw_error = false;
+  const uint64_t bytes = limitReads(options_.poll_budget);
   try
   {
     driver_->doProcessSimple(there, *obs, hw_error);
@@ -211,12 +242,15 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
       log_("sensor: receiving scans");
     in_outage_ = false;
     driver_messages_this_outage_ = 0;
+    if (stream_) garbage_meter_.scan(stream_->bytesRead());
     stats_.scans++;
     stats_.connected = true;
     backoff_ = options_.min_backoff;
     last_scan_ = steady_clock::now();
     return obs;
   }
+  if (const std::string junk = garbage(bytes); !junk.empty())
+    trouble(junk);  // and a stall once it lasts
   if (hw_error)
   {
     stats_.errors++;
@@ -247,7 +281,11 @@ void HokuyoLink::checkStall()
 
 void HokuyoLink::dropDriver()
 {
-  if (stream_) stream_why_ = stream_->dead() ? stream_->why() : "closed by swslam";
+  if (stream_)
+  {
+    stream_why_ = stream_->dead() ? stream_->why() : "closed by swslam";
+    stream_->limitReads(steady_clock::now());  // its shut-down replies are not waited for
+  }
   dropping_ = true;  // its shut-down commands fail on the dead link: not news
   driver_.reset();   // ...and cannot hang there
   dropping_ = false;

@@ -285,4 +285,108 @@ TEST(HokuyoLink, ALinkThatPausesPastTheDriversTimeoutComesBack)
   EXPECT_GE(emu.stats().connections, 2u) << said;
 }
 
+namespace
+{
+/** The emulator's sensor section. */
+mrpt::config::CConfigFileMemory sensorSection(uint16_t port)
+{
+  return mrpt::config::CConfigFileMemory("[LASER_2D]\ndriver = CHokuyoURG\nsensorLabel = HOKUYO_UTM\n"
+                                         "IP_DIR = 127.0.0.1\nPORT_DIR = " + std::to_string(port) + "\n");
+}
+
+std::string joined(const std::vector<std::string>& lines)
+{
+  std::string s;
+  for (const auto& l : lines) s += l + "\n";
+  return s;
+}
+}  // namespace
+
+TEST(HokuyoLink, ALinkSendingGarbageIsReportedCountedAndReconnected)
+{
+  // After 20 scans the first connection sends random bytes instead of SCIP. MRPT's driver
+  // searched them for a reply forever (the poll never returned); now each poll reads for
+  // poll_budget at most, the garbage is said and counted, and after stall_timeout the link
+  // is replaced, the next connection streaming again.
+  EmulatorOptions opt;
+  opt.faults.garbage_after_scans = 20;
+  ScipEmulator emu(utmSource(), opt);
+  const auto cfg = sensorSection(emu.port());
+  io::HokuyoLinkOptions lo;
+  lo.stall_timeout = milliseconds(1000);
+  std::vector<std::string> log;
+  io::HokuyoLink link(cfg, "LASER_2D", lo, [&](const std::string& m) { log.push_back(m); });
+  size_t scans = 0;
+  auto longest = std::chrono::steady_clock::duration::zero();
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (scans < 60 && std::chrono::steady_clock::now() < deadline)
+  {
+    const auto t = std::chrono::steady_clock::now();
+    scans += link.poll() != nullptr;
+    longest = std::max(longest, std::chrono::steady_clock::now() - t);
+  }
+  EXPECT_EQ(scans, 60u) << joined(log);
+  EXPECT_LT(longest, milliseconds(800)) << "a poll read past its budget";
+  const auto& s = link.stats();
+  EXPECT_GT(s.garbage_bytes, 0u);
+  EXPECT_LE(s.garbage_bytes, emu.stats().garbage_bytes);
+  EXPECT_GE(s.stalls, 1u);
+  EXPECT_EQ(emu.stats().connections, 2u);
+  EXPECT_TRUE(contains(log, "not SCIP 2.0")) << joined(log);
+  EXPECT_TRUE(contains(log, "receiving scans again")) << joined(log);
+}
+
+TEST(HokuyoLink, GarbageFromTheStartFailsEachConnectionWithinItsBudget)
+{
+  EmulatorOptions opt;
+  opt.faults.garbage_after_scans = 0;
+  opt.faults.garbage_connections = 1000;
+  ScipEmulator emu(utmSource(), opt);
+  const auto cfg = sensorSection(emu.port());
+  io::HokuyoLinkOptions lo;
+  lo.connect_budget = milliseconds(300);
+  lo.max_backoff = milliseconds(250);
+  std::vector<std::string> log;
+  io::HokuyoLink link(cfg, "LASER_2D", lo, [&](const std::string& m) { log.push_back(m); });
+  auto longest = std::chrono::steady_clock::duration::zero();
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+  size_t scans = 0;
+  while (std::chrono::steady_clock::now() < end)
+  {
+    const auto t = std::chrono::steady_clock::now();
+    scans += link.poll() != nullptr;
+    longest = std::max(longest, std::chrono::steady_clock::now() - t);
+  }
+  EXPECT_EQ(scans, 0u);
+  EXPECT_LT(longest, milliseconds(600));
+  EXPECT_GE(link.stats().errors, 2u);  // every attempt failed, and was retried
+  EXPECT_GE(emu.stats().connections, 2u);
+  EXPECT_GT(link.stats().garbage_bytes, 0u);
+  EXPECT_TRUE(contains(log, "initialization failed: the link sends data that is not SCIP 2.0")) << joined(log);
+}
+
+TEST(HokuyoLink, AStopEndsAPollInsideTheDriverAndIsNotAFailure)
+{
+  EmulatorOptions opt;
+  opt.faults.garbage_after_scans = 0;
+  ScipEmulator emu(utmSource(), opt);
+  const auto cfg = sensorSection(emu.port());
+  io::HokuyoLinkOptions lo;
+  lo.connect_budget = lo.poll_budget = milliseconds(20000);  // only the stop can end it
+  const auto stop_at = std::chrono::steady_clock::now() + milliseconds(300);
+  lo.stop = [&] { return std::chrono::steady_clock::now() >= stop_at; };
+  std::vector<std::string> log;
+  auto link = std::make_unique<io::HokuyoLink>(cfg, "LASER_2D", lo, [&](const std::string& m) { log.push_back(m); });
+  EXPECT_FALSE(link->poll());
+  const auto took = std::chrono::steady_clock::now() - stop_at;
+  EXPECT_LT(took, milliseconds(300));
+  EXPECT_GT(emu.stats().garbage_bytes, 0u);
+  EXPECT_EQ(link->stats().errors, 0u);
+  EXPECT_EQ(link->stats().driver_messages, 0u);
+  EXPECT_TRUE(log.empty()) << joined(log);
+  const auto t = std::chrono::steady_clock::now();
+  link.reset();  // its driver shuts down without waiting on the garbage
+  EXPECT_LT(std::chrono::steady_clock::now() - t, milliseconds(300));
+}
+
 }  // namespace swslam::scip

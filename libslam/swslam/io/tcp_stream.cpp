@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -60,13 +61,37 @@ void TcpStream::die(const std::string& why)
 
 std::string TcpStream::why() const { return why_; }
 
+void TcpStream::limitReads(std::chrono::steady_clock::time_point deadline)
+{
+  read_deadline_ = deadline;
+  cut_ = false;
+}
+
 size_t TcpStream::Read(void* buffer, size_t count)
 {
   if (dead_ || count == 0) return 0;
+  const auto now = std::chrono::steady_clock::now();
+  if (now >= read_deadline_ || (stop_ && stop_()))
+  {
+    cut_ = true;
+    return 0;
+  }
+  // The wait ends at the limit too (rounded up: a wait of 0 ms would spin); a wait that ends
+  // there without data is cut as well.
+  const bool to_limit = read_deadline_ - now < read_timeout_;
+  const auto wait = to_limit ? std::chrono::ceil<std::chrono::milliseconds>(read_deadline_ - now) : read_timeout_;
   pollfd p{fd_, POLLIN, 0};
-  if (::poll(&p, 1, static_cast<int>(read_timeout_.count())) != 1) return 0;
+  if (::poll(&p, 1, static_cast<int>(wait.count())) != 1)
+  {
+    cut_ = cut_ || to_limit;
+    return 0;
+  }
   const ssize_t n = ::recv(fd_, buffer, count, 0);
-  if (n > 0) return static_cast<size_t>(n);
+  if (n > 0)
+  {
+    bytes_read_ += static_cast<uint64_t>(n);
+    return static_cast<size_t>(n);
+  }
   if (n == 0)
     die("the sensor closed the connection");
   else if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
