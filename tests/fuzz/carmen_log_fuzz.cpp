@@ -2,7 +2,7 @@
 // [carmen] parameters, and laser-only with timestamp repair. Documented error path: none for
 // an existing file and valid parameters (malformed lines are skipped and counted). Promises
 // checked: every record holds an observation with a finite timestamp >= 0 (negative ones
-// are written as 0); the statistics count every record returned.
+// are written as 0), which the observation holds; the statistics count every record returned.
 
 #include "fuzz_input.h"
 
@@ -25,6 +25,11 @@ void readAll(const std::string& path, const swslam::io::CarmenParams& params)
     SWSLAM_FUZZ_CHECK(rec.observation != nullptr, "line " + std::to_string(rec.line));
     SWSLAM_FUZZ_CHECK(std::isfinite(rec.timestamp) && rec.timestamp >= 0,
                       "line " + std::to_string(rec.line) + ": t = " + std::to_string(rec.timestamp));
+    // The observation holds that time (MRPT's clock: 100 ns ticks in an int64 since 1601).
+    const double held = mrpt::Clock::toDouble(rec.observation->timestamp);
+    SWSLAM_FUZZ_CHECK(std::abs(held - rec.timestamp) <= 1e-3,
+                      "line " + std::to_string(rec.line) + ": t = " + std::to_string(rec.timestamp) +
+                          ", the observation holds " + std::to_string(held));
     const double f = reader.fractionRead();
     SWSLAM_FUZZ_CHECK(f >= 0 && f <= 1, "fractionRead() = " + std::to_string(f));
   }

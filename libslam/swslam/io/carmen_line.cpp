@@ -12,6 +12,10 @@ namespace
 /** Largest beam or remission count accepted: far above any real 2D scanner, low enough
  * that a corrupt count cannot ask for gigabytes. */
 constexpr long kMaxCount = 100000;
+/** Largest timestamp magnitude accepted [s] (year 5138): MRPT's clock (100 ns ticks since
+ * 1601 in an int64) ends near 9.1e11 s, and a log's times may still be shifted by the most
+ * negative one (carmen_log.h), so that they stay below 2e11 s. Far beyond any real log. */
+constexpr double kMaxTimestamp = 1e11;
 
 /** Reads the whitespace-separated fields of one message, naming the field on errors. */
 class Fields
@@ -66,6 +70,9 @@ class Fields
   double timestampAndEnd()
   {
     const double t = number("ipc_timestamp");
+    if (std::abs(t) > kMaxTimestamp)
+      throw CarmenLineError(message() + ": field 'ipc_timestamp' is beyond +-1e11 s (MRPT's clock "
+                            "cannot hold it): '" + tokens_[next_ - 1] + "'");
     if (remaining() > 2)
       throw CarmenLineError(message() + ": " + std::to_string(remaining() - 2) +
                             " unexpected field(s) after 'ipc_timestamp host logger_timestamp'");

@@ -71,7 +71,8 @@ struct CarmenLine
 
 /** Parses one line. Throws CarmenLineError naming the problem when a known message is
  * malformed: missing or extra fields, a non-numeric or non-finite field (ranges may be
- * nan/inf: they become invalid rays), or an implausible beam count. */
+ * nan/inf: they become invalid rays), an implausible beam count, or a timestamp beyond
+ * +-1e11 s (MRPT's clock cannot hold it). */
 CarmenLine parseCarmenLine(const std::string& line);
 
 /** The sensor a laser message comes from: "front", "rear", "laser3" or "laser4"

@@ -83,6 +83,8 @@ TEST(CarmenLine, MalformedLinesNameTheProblem)
       {"FLASER 2 1 2 0 0 0 0 0 0 1 h 1 extra", "unexpected"},      // extra fields
       {"ODOM 1 2 nan 0 0 0 1 h 1", "not finite"},                  // non-finite pose
       {"ODOM 1 2 0 0 0 0 inf h 1", "ipc_timestamp"},               // non-finite timestamp
+      {"ODOM 1 2 0 0 0 0 1e308 h 1", "beyond"},                    // past MRPT's clock
+      {"FLASER 1 2 0 0 0 0 0 0 -2e11 h 1", "beyond"},              // (found by fuzzing)
       {"PARAM lonely", "param_value"}};
   for (const auto& [text, expected] : cases)
   {
