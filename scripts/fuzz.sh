@@ -35,6 +35,13 @@ if [[ -z $cxx ]]; then
 fi
 [[ -n $cxx ]] || { echo "fuzz: no clang++ (scripts/install-deps.sh --with-fuzz installs it)" >&2; exit 2; }
 
+# Readable stacks in the reports: llvm-14 installs the symbolizer under a versioned name.
+if [[ -z ${ASAN_SYMBOLIZER_PATH:-} ]] && ! command -v llvm-symbolizer > /dev/null; then
+  for s in /usr/bin/llvm-symbolizer-14 /usr/lib/llvm-14/bin/llvm-symbolizer; do
+    [[ -x $s ]] && { export ASAN_SYMBOLIZER_PATH=$s; break; }
+  done
+fi
+
 build=build-fuzz
 cmake -S . -B $build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$cxx" \
   -DSWSLAM_FUZZ=ON -DSWSLAM_BUILD_TESTS=OFF -DSWSLAM_BUILD_APPS=OFF > $build.configure.log ||
