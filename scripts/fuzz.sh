@@ -43,10 +43,10 @@ if [[ -z ${ASAN_SYMBOLIZER_PATH:-} ]] && ! command -v llvm-symbolizer > /dev/nul
 fi
 
 build=build-fuzz
+mkdir -p $build
 cmake -S . -B $build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$cxx" \
-  -DSWSLAM_FUZZ=ON -DSWSLAM_BUILD_TESTS=OFF -DSWSLAM_BUILD_APPS=OFF > $build.configure.log ||
-  { cat $build.configure.log; exit 2; }
-rm -f $build.configure.log
+  -DSWSLAM_FUZZ=ON -DSWSLAM_BUILD_TESTS=OFF -DSWSLAM_BUILD_APPS=OFF > $build/configure.log ||
+  { cat $build/configure.log; exit 2; }
 cmake --build $build -j "${FUZZ_JOBS:-$(nproc)}" --target "${harnesses[@]/#/fuzz_}"
 
 # The ini harness's dictionary: every section and key of the documented configuration.
