@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian bookworm packages swslam needs to build, test and run.
 # Skips apt entirely when every package is already installed.
-# Usage: scripts/install-deps.sh [--with-bench] [--with-tools]
+# Usage: scripts/install-deps.sh [--with-bench] [--with-tools] [--with-fuzz]
 #   --with-bench adds Ceres for swslam-bench-graph;
 #   --with-tools adds MRPT's programs (mrpt-apps: RawLogViewer, rawlog-edit, icp-slam,
-#   carmen2rawlog), which scripts/bench-valley.sh runs side by side with swslam.
+#   carmen2rawlog), which scripts/bench-valley.sh runs side by side with swslam;
+#   --with-fuzz adds clang 14 with its libFuzzer and sanitizer runtimes, and llvm-symbolizer
+#   for readable stacks, which scripts/fuzz.sh builds the harnesses with.
 set -euo pipefail
 
 packages=(
@@ -21,7 +23,8 @@ for arg in "$@"; do
   case $arg in
     --with-bench) packages+=(libceres-dev) ;;
     --with-tools) packages+=(mrpt-apps) ;;
-    *) echo "install-deps: unknown option '$arg' (expected --with-bench or --with-tools)" >&2; exit 2 ;;
+    --with-fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
+    *) echo "install-deps: unknown option '$arg' (expected --with-bench, --with-tools or --with-fuzz)" >&2; exit 2 ;;
   esac
 done
 

@@ -45,7 +45,16 @@ std::unique_ptr<mrpt::config::CConfigFileMemory> readIniFile(const std::string& 
     throw std::invalid_argument("config: cannot read '" + path + "'");
   const std::string text(std::istreambuf_iterator<char>(in), {});
   checkIniLines(text, path);
-  return std::make_unique<mrpt::config::CConfigFileMemory>(text);
+  try
+  {
+    return std::make_unique<mrpt::config::CConfigFileMemory>(text);
+  }
+  catch (const std::exception& e)
+  {
+    // MRPT expands $env{NAME} and ${expression} anywhere in the text, comments too, and
+    // throws std::runtime_error on one it cannot parse (e.g. an unclosed "$env{").
+    throw std::invalid_argument("config: '" + path + "': " + e.what());
+  }
 }
 
 }  // namespace swslam::common

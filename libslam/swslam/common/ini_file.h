@@ -18,7 +18,8 @@ namespace swslam::common
 void checkIniLines(const std::string& text, const std::string& source);
 
 /** The .ini file at `path`, its lines checked (checkIniLines). Throws std::invalid_argument
- * naming the file if it cannot be read, or the line that is wrong. */
+ * naming the file if it cannot be read, or the line that is wrong, or MRPT's message if it
+ * cannot expand a $env{NAME} or ${expression} of the text (comments included). */
 std::unique_ptr<mrpt::config::CConfigFileMemory> readIniFile(const std::string& path);
 
 }  // namespace swslam::common

@@ -3,6 +3,8 @@
 #include <swslam/common/atomic_file.h>
 #include <swslam/common/number_rows.h>
 
+#include <mrpt/core/format.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -31,14 +33,14 @@ std::vector<StampedPose> readTum(const std::string& path)
 
 std::string formatTum(const std::vector<StampedPose>& poses)
 {
+  // mrpt::format has no length limit: "%.6f" of a (finite) time up to 1e308 s takes 316
+  // characters, and a fixed buffer cut the line, which no reader could load back.
   std::string s = "# timestamp x y z qx qy qz qw\n";
-  char buf[256];
   for (const auto& p : poses)
   {
     const double h = 0.5 * p.pose.phi();
-    std::snprintf(buf, sizeof(buf), "%.6f %.9g %.9g 0 0 0 %.9g %.9g\n", p.t, p.pose.x(),
-                  p.pose.y(), std::sin(h), std::cos(h));
-    s += buf;
+    s += mrpt::format("%.6f %.9g %.9g 0 0 0 %.9g %.9g\n", p.t, p.pose.x(), p.pose.y(),
+                      std::sin(h), std::cos(h));
   }
   return s;
 }

@@ -2,6 +2,8 @@
 
 #include <swslam/common/number_rows.h>
 
+#include <mrpt/core/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -30,14 +32,12 @@ std::vector<Relation> readRelations(const std::string& path)
 
 std::string formatRelations(const std::vector<Relation>& relations)
 {
+  // No length limit (mrpt::format): two "%.6f" times of up to 1e308 s overflowed a fixed
+  // buffer, which cut the line.
   std::string s = "# timestamp1 timestamp2 x y z roll pitch yaw\n";
-  char buf[256];
   for (const auto& r : relations)
-  {
-    std::snprintf(buf, sizeof(buf), "%.6f %.6f %.9g %.9g 0 0 0 %.9g\n", r.t1, r.t2,
-                  r.delta.x(), r.delta.y(), r.delta.phi());
-    s += buf;
-  }
+    s += mrpt::format("%.6f %.6f %.9g %.9g 0 0 0 %.9g\n", r.t1, r.t2, r.delta.x(), r.delta.y(),
+                      r.delta.phi());
   return s;
 }
 

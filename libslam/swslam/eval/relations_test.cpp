@@ -48,6 +48,20 @@ TEST(EvalRelations, FileRoundTripAndFreiburgLines)
   EXPECT_NEAR(back[0].t1, r[0].t1, 1e-6);
 }
 
+TEST(EvalRelations, AnyFiniteTimeWritesALineThatReadsBack)
+{
+  // Two "%.6f" times of 1e308 s: a fixed buffer cut the line (found by fuzzing,
+  // tests/fuzz/regressions/relations_io).
+  const auto dir = swslam::test::tempDir("relations_long");
+  const std::vector<Relation> r = {{1e308, -1e308, {1, 2, 0.5}, true}};
+  std::ofstream(dir + "/long.relations") << swslam::eval::formatRelations(r);
+  const auto back = swslam::eval::readRelations(dir + "/long.relations");
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_DOUBLE_EQ(back[0].t1, 1e308);
+  EXPECT_DOUBLE_EQ(back[0].t2, -1e308);
+  EXPECT_NEAR(back[0].delta.phi(), 0.5, 1e-9);
+}
+
 TEST(EvalRelations, MalformedLineIsNamed)
 {
   const auto dir = swslam::test::tempDir("relations_bad");

@@ -71,7 +71,8 @@ struct CarmenLine
 
 /** Parses one line. Throws CarmenLineError naming the problem when a known message is
  * malformed: missing or extra fields, a non-numeric or non-finite field (ranges may be
- * nan/inf: they become invalid rays), or an implausible beam count. */
+ * nan/inf: they become invalid rays), or an implausible beam count. A timestamp out of range
+ * is the log reader's to judge (carmen_log.h). */
 CarmenLine parseCarmenLine(const std::string& line);
 
 /** The sensor a laser message comes from: "front", "rear", "laser3" or "laser4"
