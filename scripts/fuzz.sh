@@ -11,6 +11,8 @@
 #   graph_io tum_io relations_io ini_config (default: all)
 # Environment: FUZZ_RSS_MB / FUZZ_MALLOC_MB (2048), FUZZ_TIMEOUT (10 s per input),
 #   FUZZ_FORK=1 (go on after a crash, below), FUZZ_JOBS (build parallelism, default nproc),
+#   FUZZ_SEED (libFuzzer's -seed: the same mutations in the same order on every machine, as CI
+#   runs it; a slower machine runs a prefix of them),
 #   CXX (a clang++, default clang++ or clang++-14).
 # Kept between runs: build-fuzz/corpus/<name>/ (the corpus grown so far). Each run's logs and
 # crash inputs: build-fuzz/fuzz-out/<name>/ (emptied first).
@@ -73,6 +75,7 @@ dict_of() {
 # a time), which saves each crash, leak, OOM or timeout and goes on, to count them all.
 mode=()
 [[ ${FUZZ_FORK:-0} == 1 ]] && mode=(-fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1)
+[[ -n ${FUZZ_SEED:-} ]] && mode+=(-seed="$FUZZ_SEED")
 
 failed=0
 rows=()
