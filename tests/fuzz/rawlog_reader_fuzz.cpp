@@ -1,4 +1,4 @@
-// Harness: io::RawlogReader over any bytes as a rawlog file (plain; gzip is MRPT's inflate).
+// Harness: io::RawlogReader over any bytes as a rawlog file (plain or gzip, read through zlib).
 // Documented error path: RawlogError from next() (corrupt or truncated entry). Promises
 // checked: every item has exactly one of observation / odometry increment; the error's entry
 // index is the count of entries read; fractionRead() stays in [0, 1].

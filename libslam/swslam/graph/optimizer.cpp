@@ -506,6 +506,14 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     if (again == off) break;
     off.swap(again);
   }
+  total.status = refit.status;
+  if (refit.status == OptimizationStatus::Diverged)
+  {
+    problem.poses = given;
+    total.message = "the least-squares solve on the kept edges: " + refit.message;
+    total.time_s = timer.Tac();
+    return total;
+  }
   const Evaluation end = evaluate(problem, problem.poses, kernels, measurementRotations(problem));
   total.kernels = kernels;
   total.final_chi2 = end.chi2;

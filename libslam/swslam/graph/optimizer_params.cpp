@@ -46,8 +46,8 @@ void GraphOptimizerParams::check() const
     throw std::invalid_argument("graph_optimizer: max_iterations must be >= 1");
   if (gnc_stage_iterations < 1)
     throw std::invalid_argument("graph_optimizer: gnc_stage_iterations must be >= 1");
-  if (!(gnc_alpha_step > 0 && gnc_alpha_step <= 10))
-    throw std::invalid_argument("graph_optimizer: gnc_alpha_step must be in (0, 10]");
+  if (!(gnc_alpha_step >= 0.05 && gnc_alpha_step <= 10))
+    throw std::invalid_argument("graph_optimizer: gnc_alpha_step must be in [0.05, 10]");
   if (!(adaptive_alpha_min >= -100 && adaptive_alpha_min <= adaptive_alpha_max && adaptive_alpha_max <= 2))
     throw std::invalid_argument("graph_optimizer: adaptive_alpha_min and adaptive_alpha_max must satisfy -100 <= min <= max <= 2");
   if (!(adaptive_alpha_step >= 0.01 && adaptive_alpha_step <= 10))
@@ -118,7 +118,7 @@ void GraphOptimizerParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
           "Barron kernel shape in [-inf, 2]: 2 L2, 1 L1-like, 0 Cauchy, -2 Geman-McClure, -inf Welsch");
   c.write(s, "kernel_c", kernel_c, -1, -1, "kernel scale, in standard deviations of the residual");
   c.write(s, "kernel_schedule", std::string(kernelScheduleName(kernel_schedule)), -1, -1,
-          "fixed: the kernel from the start; gnc: graduated non-convexity from alpha 1 down to kernel_alpha; adaptive: each stage's shape and scale estimated from the residuals");
+          "fixed: the kernel from the start; gnc: graduated non-convexity from alpha 1 down to kernel_alpha; adaptive: as gnc, each stage's shape per edge kind estimated from the residuals, the final kernels' scale too");
   c.write(s, "gnc_alpha_step", gnc_alpha_step, -1, -1, "gnc, adaptive: the shape's bound falls by this each stage");
   c.write(s, "gnc_stage_iterations", gnc_stage_iterations, -1, -1, "gnc, adaptive: LM iterations per stage");
   c.write(s, "adaptive_alpha_min", adaptive_alpha_min, -1, -1, "adaptive: the lowest shape estimated");

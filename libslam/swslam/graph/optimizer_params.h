@@ -19,9 +19,10 @@ namespace swslam::graph
  *   al., RA-L 2020): the shape starts convex (alpha = 1) and falls by gnc_alpha_step each
  *   stage to kernel_alpha, each stage started from the last one's result; then least squares
  *   on the edges the kernel kept;
- * - Adaptive: as Gnc, but each stage's shape and scale per edge kind are estimated from the
- *   residuals (Chebrolu et al., RA-L 2021): the shape that fits them best, no lower than the
- *   stage's bound, and the scale kernel_c times a robust residual scale. */
+ * - Adaptive: as Gnc, but each stage's shape per edge kind is estimated from the residuals
+ *   (Chebrolu et al., RA-L 2021): the shape that fits them best, held within the stage's
+ *   bounds; the kernels at the result also take the scale kernel_c times a robust residual
+ *   scale. */
 enum class KernelSchedule
 {
   Fixed,

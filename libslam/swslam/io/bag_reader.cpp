@@ -228,11 +228,16 @@ void BagReader::readSameTime()
 {
   if (!bag_->view || deferred_error_) return;
   std::optional<ros::Time> time;
+  std::string at;  // the message being read, for the error: " (topic at time)"
   try
   {
     while (bag_->it != bag_->view->end() && pending_.size() < kMaxSameTime)
     {
+      at.clear();
       const rosbag::MessageInstance& m = *bag_->it;
+      std::ostringstream here;
+      here << " (" << m.getTopic() << " at " << m.getTime() << ")";
+      at = here.str();
       if (time && m.getTime() != *time) break;
       time = m.getTime();
       // A message without a header stamp (some drivers leave it zero) is stamped with its bag time.
@@ -256,15 +261,7 @@ void BagReader::readSameTime()
   {
     const size_t index = read_ + pending_.size();
     std::ostringstream where;
-    where << "bag '" << path_ << "': message #" << index << " of " << total_ << " cannot be read";
-    try
-    {
-      const rosbag::MessageInstance& m = *bag_->it;
-      where << " (" << m.getTopic() << " at " << m.getTime() << ")";
-    }
-    catch (const std::exception&)
-    {
-    }
+    where << "bag '" << path_ << "': message #" << index << " of " << total_ << " cannot be read" << at;
     deferred_error_ = std::make_shared<BagError>(where.str() + ": " + e.what(), index);
   }
   // rosbag orders messages of one time arbitrarily; a rawlog gives the odometry first.

@@ -116,6 +116,9 @@ void decodeRawlog(const std::string& path, DecodeChannel& channel)
   };
   for (uint64_t entry = 0;; entry++)
   {
+    // Marked before the look-ahead reads on, so that a damaged stream found there is this
+    // entry's, not the last one's.
+    channel.mark({entry, file.position() - archive.peek(0).size()});
     const std::string& head = archive.peek(kRayCountAt + 4);
     channel.mark({entry, file.position() - head.size()});
     if (head.empty()) return;  // the clean end of the file
@@ -183,6 +186,7 @@ bool RawlogReader::next(RawlogItem& item)
   }
   catch (const DecodeFailure& f)
   {
+    entries_ = f.at().index;  // the entries before the damaged one
     throw corrupt(f.at(), f.what());
   }
   entries_ = frame_.at.index + 1;

@@ -450,4 +450,7 @@ TEST(RawlogReader, ACutGzipStreamIsAnErrorEvenAtAnEntryBoundary)
   ASSERT_TRUE(error) << "a truncated gzip rawlog must not look like a clean end";
   EXPECT_EQ(read, 80u);
   EXPECT_NE(std::string(error->what()).find("the gzip stream is cut short"), std::string::npos) << error->what();
+  // The damage is after the 80 entries, not in the last of them.
+  EXPECT_EQ(error->entry(), 80u) << error->what();
+  EXPECT_NE(std::string(error->what()).find("entry #80 "), std::string::npos) << error->what();
 }

@@ -92,7 +92,9 @@ class PipeChannel : public DecodeChannel
   void send(double fraction, const std::string& payload) override { frame(FrameKind::Data, fraction, payload); }
   void frame(FrameKind kind, double fraction, const std::string& payload)
   {
-    const FrameHeader h{static_cast<uint8_t>(kind), at_.index, at_.offset, fraction, payload.size()};
+    FrameHeader h;
+    std::memset(&h, 0, sizeof(h));  // no uninitialized padding down the pipe
+    h = {static_cast<uint8_t>(kind), at_.index, at_.offset, fraction, payload.size()};
     buffer_.assign(reinterpret_cast<const char*>(&h), sizeof(h));
     buffer_ += payload;
     steps_++;
