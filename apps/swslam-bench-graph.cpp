@@ -29,6 +29,8 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> config("c", "config", "with --false-loops: the [graph_optimizer] section of the "
                                       "methods (default: the built-in defaults, as config/default.ini)",
                                       false, "", "INI", cmd);
+  TCLAP::MultiArg<std::string> only("", "method", "with --false-loops: run only this method (repeatable; "
+                                    "least-squares, fixed, gnc, adaptive, ceres-cauchy)", false, "NAME", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
@@ -52,6 +54,7 @@ int main(int argc, char** argv)
                            return run;
                          }});
 #endif
+      if (only.isSet()) methods = swslam::bench::selectMethods(methods, only.getValue());
       swslam::bench::falseLoopCases("grid-" + std::to_string(o.nodes), s.graph, false_loops.getValue(), params, methods,
                                     stdout);
       // A public graph too: MRPT's circle of 50 nodes, from its own initial guess.

@@ -3,7 +3,9 @@
 #include <swslam/graph/sliding_window.h>
 #include <swslam/graph/synthetic.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <set>
 
 namespace swslam::bench
@@ -48,6 +50,17 @@ std::vector<RobustMethod> ourRobustMethods(const graph::GraphOptimizerParams& pa
   adaptive.kernel_schedule = graph::KernelSchedule::Adaptive;
   return {oursWith("least-squares", l2), oursWith("fixed", fixed), oursWith("gnc", gnc),
           oursWith("adaptive", adaptive)};
+}
+
+std::vector<RobustMethod> selectMethods(const std::vector<RobustMethod>& methods, const std::vector<std::string>& names)
+{
+  for (const std::string& n : names)
+    if (std::none_of(methods.begin(), methods.end(), [&](const RobustMethod& m) { return m.name == n; }))
+      throw std::invalid_argument("no method named '" + n + "'");
+  std::vector<RobustMethod> out;
+  for (const RobustMethod& m : methods)
+    if (std::find(names.begin(), names.end(), m.name) != names.end()) out.push_back(m);
+  return out;
 }
 
 std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::PoseGraph& clean,
@@ -96,6 +109,7 @@ std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::
         c.precision = off.empty() ? 1.0 : static_cast<double>(hits) / static_cast<double>(off.size());
         c.recall = truth.empty() ? 1.0 : static_cast<double>(hits) / static_cast<double>(truth.size());
         c.time_s = r.time_s;
+        c.cpu_s = r.cpu_s;
         c.iterations = r.iterations;
         out.push_back(c);
         if (progress)
@@ -112,9 +126,9 @@ std::string formatCase(const FalseLoopCase& c)
 {
   char buf[320];
   std::snprintf(buf, sizeof(buf),
-                "%-22s %-14s loops=%-5zu %-7s rmse_to_clean_m=%-10.4g clean_chi2_excess=%-9.2e cost_vs_clean=%-7.3g off=%-5zu precision=%.3f recall=%.3f time_s=%.3f iters=%zu",
+                "%-22s %-14s loops=%-5zu %-7s rmse_to_clean_m=%-10.4g clean_chi2_excess=%-9.2e cost_vs_clean=%-7.3g off=%-5zu precision=%.3f recall=%.3f time_s=%.3f cpu_s=%.3f iters=%zu",
                 c.graph.c_str(), c.method.c_str(), c.false_loops, c.grouped ? "grouped" : "random", c.rmse_to_clean, c.clean_chi2_excess, c.target_cost_ratio,
-                c.switched_off, c.precision, c.recall, c.time_s, c.iterations);
+                c.switched_off, c.precision, c.recall, c.time_s, c.cpu_s, c.iterations);
   return buf;
 }
 

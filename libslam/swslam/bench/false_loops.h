@@ -9,6 +9,7 @@
 #include <swslam/graph/pose_graph.h>
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ double targetCost(const graph::PoseGraph& graph, const graph::GraphOptimizerPara
  * robustified: the loops are what may be false). */
 std::vector<RobustMethod> ourRobustMethods(const graph::GraphOptimizerParams& params);
 
+/** The methods named in `names`, in their order in `methods`; throws std::invalid_argument for
+ * a name no method has. */
+std::vector<RobustMethod> selectMethods(const std::vector<RobustMethod>& methods, const std::vector<std::string>& names);
+
 struct FalseLoopCase
 {
   std::string graph, method;
@@ -47,6 +52,7 @@ struct FalseLoopCase
   double precision = 1, recall = 1;  ///< of the switched-off edges against the false loops
   size_t switched_off = 0;
   double time_s = 0;
+  double cpu_s = 0;  ///< process CPU time (steadier than time_s on a busy machine)
   size_t iterations = 0;  ///< the method's linear solves (Ceres: its iterations)
 };
 

@@ -42,3 +42,13 @@ TEST(FalseLoops, EachMethodIsScoredAgainstTheOutlierFreeOptimum)
     }
   }
 }
+
+TEST(FalseLoops, MethodsAreSelectedByName)
+{
+  const auto all = ourRobustMethods(graph::GraphOptimizerParams());
+  const auto two = selectMethods(all, {"gnc", "least-squares"});
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0].name, "least-squares");  // in the methods' own order
+  EXPECT_EQ(two[1].name, "gnc");
+  EXPECT_THROW(selectMethods(all, {"gnc", "gcn"}), std::invalid_argument);
+}
