@@ -66,7 +66,12 @@ TEST(Gnc, WithoutOutliersItReachesLeastSquares)
   const OptimizationReport r = optimizeFull(g, params);
   // The status is the last solve's (least squares on the kept edges), not a capped stage's.
   EXPECT_EQ(r.status, OptimizationStatus::Converged) << r.message;
-  EXPECT_GT(r.stages, 1u);
+  // gnc: no edge that the target kernel would switch off after the convex stage, so it goes
+  // straight to least squares; adaptive settles its estimate over more stages.
+  if (params.kernel_schedule == KernelSchedule::Gnc)
+    EXPECT_EQ(r.stages, 1u);
+  else
+    EXPECT_GT(r.stages, 1u);
   const PoseGraph l2 = cleanOptimum(s);
   const double chi2_l2 = graphChi2(fullSubproblem(l2, {}).problem);
   EXPECT_NEAR(r.final_chi2, chi2_l2, 1e-3 * chi2_l2);

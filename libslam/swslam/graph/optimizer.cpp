@@ -1,6 +1,7 @@
 #include <swslam/graph/optimizer.h>
 
 #include <swslam/graph/adaptive_kernel.h>
+#include <swslam/graph/coupled_system.h>
 #include <swslam/graph/normal_equations.h>
 
 #include <mrpt/system/CTicTac.h>
@@ -69,9 +70,27 @@ Evaluation evaluate(const GraphProblem& p, const std::vector<geometry::Pose2>& x
   return ev;
 }
 
-/** Fills H and g with the IRLS-weighted Gauss-Newton terms at x (eq. 11-13). */
+/** Per edge, whether its IRLS weight at x is below `weight` (robustified edges only). */
+std::vector<char> weakEdges(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const KindKernels& k,
+                            const std::vector<geometry::SinCos>& rz, double weight)
+{
+  std::vector<char> weak(p.edges.size(), 0);
+  const std::vector<geometry::SinCos> rx = poseRotations(x);
+  for (size_t n = 0; n < p.edges.size(); ++n)
+  {
+    const auto& e = p.edges[n];
+    if (!e.robust) continue;
+    const Eigen::Vector3d err = geometry::se2Error(x[e.i], x[e.j], e.z, rx[e.i], rz[n]);
+    weak[n] = edgeCost(std::sqrt(err.dot(e.information * err)), e, k).weight < weight;
+  }
+  return weak;
+}
+
+/** Fills H and g with the IRLS-weighted Gauss-Newton terms at x (eq. 11-13); a decoupled edge
+ * (coupled_system.h) adds no block between its two poses. */
 void linearize(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const std::vector<int>& var,
-               const KindKernels& k, const std::vector<geometry::SinCos>& rz, NormalEquations& ne)
+               const KindKernels& k, const std::vector<geometry::SinCos>& rz, const CoupledSystem& sys,
+               NormalEquations& ne)
 {
   ne.setZero();
   Eigen::VectorXd& g = ne.gradient();
@@ -97,7 +116,7 @@ void linearize(const GraphProblem& p, const std::vector<geometry::Pose2>& x, con
       ne.addDiagonal(b, Jj.transpose() * W * Jj);
       g.segment<3>(3 * b) += Jj.transpose() * We;
     }
-    if (a >= 0 && b >= 0) ne.addOffDiagonal(a, b, Ji.transpose() * W * Jj);
+    if (a >= 0 && b >= 0 && sys.coupled(n)) ne.addOffDiagonal(a, b, Ji.transpose() * W * Jj);
   }
 }
 
@@ -158,24 +177,50 @@ struct Outcome
   std::string why = "reached max_iterations";
 };
 
+/** An edge whose weight is below this is decoupled in the non-convex stages of graduated
+ * non-convexity (coupled_system.h). With 0.1 (what the default switched_off_weight calls
+ * switched off) the true edges still strained after the convex stage were decoupled too, and
+ * 1000 false loops then needed more refits than allowed (0.09 m off the optimum). */
+constexpr double kDecoupledWeight = 0.01;
+/** Edges are decoupled once at least this share of them would be (each time the pattern
+ * changes its symbolic analysis is redone): not for a few false loops, which add little
+ * fill-in. */
+constexpr double kMinDecoupledShare = 0.01;
+
+/** How an optimization keeps its normal equations. */
+struct SystemUse
+{
+  CoupledSystem* shared = nullptr;  ///< kept across solves (nullptr: one of its own)
+  /** Decouple the edges whose weight is below kDecoupledWeight, checked at the start and
+   * after every accepted step (and keep those the last solve decoupled). */
+  bool decouple = false;
+};
+
 /** Levenberg-Marquardt with IRLS reweighting at every linearization (eq. 11-13). Updates x
  * and ev (its evaluation) on every accepted step, and the iteration counts of rep. */
 Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
                            const GraphOptimizerParams& params, const KindKernels& kernel,
                            const std::vector<geometry::SinCos>& rz, std::vector<geometry::Pose2>& x,
-                           Evaluation& ev, OptimizationReport& rep)
+                           Evaluation& ev, OptimizationReport& rep, const SystemUse& use)
 {
   std::vector<std::pair<int, int>> pairs;
-  for (const auto& e : p.edges)
-    if (var[e.i] >= 0 && var[e.j] >= 0) pairs.emplace_back(var[e.i], var[e.j]);
-  NormalEquations ne(static_cast<int>(rep.free_nodes), pairs);
+  pairs.reserve(p.edges.size());
+  for (const auto& e : p.edges) pairs.emplace_back(var[e.i], var[e.j]);
+  CoupledSystem own;
+  CoupledSystem& sys = use.shared ? *use.shared : own;
+  sys.prepare(static_cast<int>(rep.free_nodes), pairs, use.decouple);
+  const size_t min_decoupled =
+      std::max<size_t>(1, static_cast<size_t>(kMinDecoupledShare * static_cast<double>(p.edges.size())));
+  if (use.decouple)
+    sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
 
   double lambda = params.lm_initial_lambda, nu = 2.0;
   Eigen::VectorXd dx;
   bool relinearize = true;
   while (rep.iterations < params.max_iterations)
   {
-    if (relinearize) linearize(p, x, var, kernel, rz, ne);
+    NormalEquations& ne = sys.equations();
+    if (relinearize) linearize(p, x, var, kernel, rz, sys, ne);
     relinearize = false;
     if (ne.gradient().lpNorm<Eigen::Infinity>() < params.gradient_tolerance)
       return {OptimizationStatus::Converged, "gradient below tolerance"};
@@ -203,6 +248,7 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
         return {OptimizationStatus::Converged, "relative cost decrease below tolerance"};
       if (dx.norm() <= params.step_tolerance * (std::sqrt(x_norm2) + params.step_tolerance))
         return {OptimizationStatus::Converged, "step below tolerance"};
+      if (use.decouple) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
       continue;
     }
     lambda *= nu;
@@ -299,7 +345,7 @@ namespace
 {
 /** The optimization with the given kernel per edge kind, from the problem's poses. */
 OptimizationReport optimizeWithKernels(GraphProblem& problem, const GraphOptimizerParams& params,
-                                       const KindKernels& kernels)
+                                       const KindKernels& kernels, const SystemUse& use = {})
 {
   mrpt::system::CTicTac timer;
   params.check();
@@ -323,7 +369,7 @@ OptimizationReport optimizeWithKernels(GraphProblem& problem, const GraphOptimiz
   else if (rep.free_nodes == 0 || problem.edges.empty())
     out = {OptimizationStatus::NothingToOptimize, "no free pose or no edge"};
   else
-    out = levenbergMarquardt(problem, var, params, kernels, rz, x, ev, rep);
+    out = levenbergMarquardt(problem, var, params, kernels, rz, x, ev, rep, use);
 
   if (out.status != OptimizationStatus::Diverged && out.status != OptimizationStatus::NothingToOptimize)
   {
@@ -387,12 +433,10 @@ bool settled(const KindKernels& a, const KindKernels& b, double alpha_step)
 /** Rounds of least squares on the kept edges at most. */
 constexpr size_t kMaxRefits = 3;
 
-/** Least squares on the edges not in `off` (increasing indices), from the problem's poses and
- * from `given`: the stages end near the inliers' optimum but may sit in another basin of it
- * (a long chain bent the other way), so the lower chi2 wins. Without the false edges both
- * solves are sparse. The problem's poses take the result unless both diverged. */
+/** Least squares on the edges not in `off` (increasing indices), from the problem's poses,
+ * which take the result unless it diverged. Without the false edges the system is sparse. */
 OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<size_t>& off,
-                                      const std::vector<geometry::Pose2>& given, const GraphOptimizerParams& params)
+                                      const GraphOptimizerParams& params, CoupledSystem& sys)
 {
   GraphProblem kept = problem;
   kept.edges.clear();
@@ -403,19 +447,55 @@ OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<s
     else
       kept.edges.push_back(problem.edges[n]);
   }
-  GraphProblem from_given = kept;
-  from_given.poses = given;
-  const KindKernels l2 = uniformKernels({2.0, params.kernel_c});
-  OptimizationReport a = optimizeWithKernels(kept, params, l2);
-  const OptimizationReport b = optimizeWithKernels(from_given, params, l2);
-  const bool take_b = b.status != OptimizationStatus::Diverged &&
-                      (a.status == OptimizationStatus::Diverged || b.final_chi2 < a.final_chi2);
-  if (take_b) kept.poses = from_given.poses;
-  OptimizationReport best = take_b ? b : a;
-  best.iterations = a.iterations + b.iterations;
-  best.accepted_steps = a.accepted_steps + b.accepted_steps;
-  if (best.status != OptimizationStatus::Diverged) problem.poses = kept.poses;
-  return best;
+  const OptimizationReport r = optimizeWithKernels(kept, params, uniformKernels({2.0, params.kernel_c}), {&sys});
+  if (r.status != OptimizationStatus::Diverged) problem.poses = kept.poses;
+  return r;
+}
+
+/** Least squares on the edges that `kernels` keep at the problem's poses (weight at least
+ * switched_off_weight), then again while the kept set changes: an edge left out that agrees
+ * with the result is taken back (at most kMaxRefits rounds). If a kept edge is switched off
+ * at a result, the stages may have left the poses in another basin of the inliers' optimum
+ * (a long chain bent the other way): that round is also solved from the `given` poses, once,
+ * and the lower chi2 wins. Only then, since the second start costs a whole solve. `kept`
+ * receives the number of edges kept; the iterations are added to `total`. */
+OptimizationReport refitKept(GraphProblem& problem, const KindKernels& kernels, const std::vector<geometry::Pose2>& given,
+                             const GraphOptimizerParams& params, CoupledSystem& sys, size_t& kept,
+                             OptimizationReport& total)
+{
+  std::vector<size_t> off = switchedOffEdges(problem, kernels, params.switched_off_weight);
+  bool second_start = false;
+  OptimizationReport refit;
+  for (size_t round = 0; round < kMaxRefits; ++round)
+  {
+    const std::vector<geometry::Pose2> start = problem.poses;
+    refit = leastSquaresOnKept(problem, off, params, sys);
+    kept = problem.edges.size() - off.size();
+    total.iterations += refit.iterations;
+    total.accepted_steps += refit.accepted_steps;
+    std::vector<size_t> again = switchedOffEdges(problem, kernels, params.switched_off_weight);
+    const bool doubt = refit.status == OptimizationStatus::Diverged ||
+                       !std::includes(off.begin(), off.end(), again.begin(), again.end());
+    if (doubt && !second_start && start != given)
+    {
+      second_start = true;
+      GraphProblem other = problem;
+      other.poses = given;
+      const OptimizationReport b = leastSquaresOnKept(other, off, params, sys);
+      total.iterations += b.iterations;
+      total.accepted_steps += b.accepted_steps;
+      if (b.status != OptimizationStatus::Diverged &&
+          (refit.status == OptimizationStatus::Diverged || b.final_chi2 < refit.final_chi2))
+      {
+        problem.poses = other.poses;
+        refit = b;
+        again = switchedOffEdges(problem, kernels, params.switched_off_weight);
+      }
+    }
+    if (refit.status == OptimizationStatus::Diverged || again == off) break;
+    off.swap(again);
+  }
+  return refit;
 }
 
 /** Graduated stages stop lowering the shape's bound here; a lower target comes next. */
@@ -440,6 +520,9 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   const std::vector<geometry::Pose2> given = problem.poses;
   GraphOptimizerParams stage = params;
   stage.max_iterations = std::min(params.max_iterations, params.gnc_stage_iterations);
+  // Without a fixed target (adaptive), no stage ends the graduation early.
+  const KindKernels target = uniformKernels(params.kernel());
+  CoupledSystem sys;  // one pattern for every stage (their edges are the same)
   OptimizationReport total;
   KindKernels kernels, previous;
   for (size_t k = 0;; ++k)
@@ -452,7 +535,11 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     bool limited = !last;  // gnc: the stages go on down to the target
     kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, 1.0, false, limited)
                        : uniformKernels({floor, params.kernel_c});
-    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels);
+    // The convex first stage couples every edge: from the given poses the true loops are as
+    // far off as the false ones (drift), and decoupling them there spoiled the stage (with
+    // no false loop, 145 edges decoupled after its first step, and 69 true edges ended
+    // switched off by the target kernel instead of none).
+    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, k > 0});
     if (k == 0)
     {
       total = s;
@@ -482,6 +569,15 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     // the estimate has settled: from a poor guess every residual is large, so the first
     // scales are wide and the shapes near 2 until the poses come near the inliers.
     if (last || (!limited && k > 0 && settled(previous, kernels, params.adaptive_alpha_step))) break;
+    // gnc: no outlier evidence, no edge that the target kernel would switch off at these
+    // poses. The lower shapes would weigh every edge about as least squares does: go
+    // straight to least squares (a false edge the graph absorbed shows up there, and is
+    // taken out by the refit).
+    if (!adaptive && switchedOffEdges(problem, target, params.switched_off_weight).empty())
+    {
+      kernels = target;
+      break;
+    }
     previous = kernels;
   }
   // The kernels at the result decide which edges are kept.
@@ -490,22 +586,8 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     bool limited = false;
     kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, 2.0, true, limited);
   }
-  // Least squares on the kept edges. An edge the stages left switched off that agrees with
-  // that result is kept after all, and the solve is repeated, until the kept set is stable.
-  std::vector<size_t> off = switchedOffEdges(problem, kernels, params.switched_off_weight);
   size_t kept = 0;
-  OptimizationReport refit;
-  for (size_t round = 0; round < kMaxRefits; ++round)
-  {
-    refit = leastSquaresOnKept(problem, off, given, params);
-    kept = problem.edges.size() - off.size();
-    total.iterations += refit.iterations;
-    total.accepted_steps += refit.accepted_steps;
-    if (refit.status == OptimizationStatus::Diverged) break;
-    std::vector<size_t> again = switchedOffEdges(problem, kernels, params.switched_off_weight);
-    if (again == off) break;
-    off.swap(again);
-  }
+  const OptimizationReport refit = refitKept(problem, kernels, given, params, sys, kept, total);
   total.status = refit.status;
   if (refit.status == OptimizationStatus::Diverged)
   {
