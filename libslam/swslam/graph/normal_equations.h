@@ -6,7 +6,8 @@
 // factorization works on H as stored, with no permuted copy per solve. Eigen's simplicial
 // LDL^T is used while its factor stays sparse, as along a trajectory with few loops; when
 // the factor is dense (an area revisited over and over), CHOLMOD's supernodal Cholesky
-// takes over, measurably faster there (doc/graph-optimization.md).
+// takes over, measurably faster there, with a nested-dissection (METIS) ordering
+// (doc/graph-optimization.md).
 
 #include <Eigen/Core>
 #include <Eigen/CholmodSupport>
