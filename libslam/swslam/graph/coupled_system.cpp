@@ -1,5 +1,7 @@
 #include <swslam/graph/coupled_system.h>
 
+#include <algorithm>
+
 namespace swslam::graph
 {
 NormalEquations& CoupledSystem::prepare(int free_blocks, const std::vector<std::pair<int, int>>& pairs,
@@ -39,7 +41,17 @@ void CoupledSystem::build()
     else
       decoupled_ += both_free;
   }
-  if (ne_ && kept == coupled_pairs_) return;
+  // Each pair once, as (lower, higher) block.
+  for (auto& [a, b] : kept)
+    if (a > b) std::swap(a, b);
+  std::sort(kept.begin(), kept.end());
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+  // The analysed pattern is kept if it holds the new pairs and not many more: a few extra
+  // pairs (structural zeros) cost less fill-in than a new analysis.
+  const size_t slack = static_cast<size_t>(kReuseSlack * static_cast<double>(coupled_pairs_.size()));
+  if (ne_ && kept.size() <= coupled_pairs_.size() && kept.size() + slack >= coupled_pairs_.size() &&
+      std::includes(coupled_pairs_.begin(), coupled_pairs_.end(), kept.begin(), kept.end()))
+    return;
   ne_ = std::make_unique<NormalEquations>(free_blocks_, kept);  // checks the pairs
   coupled_pairs_.swap(kept);
   ++analyses_;

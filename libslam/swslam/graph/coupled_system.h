@@ -23,7 +23,7 @@ class CoupledSystem
   /** Starts a solve of `free_blocks` variables whose edges join the variable pairs `pairs`
    * (-1: a fixed pose). With `keep_decoupled`, the same edges as the last solve's keep
    * their coupling; otherwise every edge is coupled. The symbolic analysis is reused when
-   * the coupled pairs are the last solve's. Throws std::invalid_argument for a block index
+   * the analysed pattern holds the coupled pairs and at most kReuseSlack more. Throws std::invalid_argument for a block index
    * outside [-1, free_blocks). */
   NormalEquations& prepare(int free_blocks, const std::vector<std::pair<int, int>>& pairs, bool keep_decoupled);
 
@@ -39,6 +39,10 @@ class CoupledSystem
   size_t decoupled() const { return decoupled_; }
   /** Symbolic analyses so far (a new pattern each). */
   size_t analyses() const { return analyses_; }
+
+  /** The analysed pattern is reused for coupled pairs it holds if it has at most this share
+   * of pairs more (least squares on the edges kept after a few false loops). */
+  static constexpr double kReuseSlack = 0.01;
 
  private:
   /** The normal equations of the coupled edges, rebuilt if their pairs changed. */

@@ -45,10 +45,42 @@ TEST(CoupledSystem, WeakEdgesAreDecoupledOnlyWhenEnoughOfThem)
   sys.prepare(4, pairs, false);
   EXPECT_TRUE(sys.coupled(3));
   EXPECT_EQ(sys.analyses(), 3u);
-  // Other edges (a kept subset) start all coupled.
+  // Other edges (a kept subset) start all coupled; without the long edge the pattern loses a
+  // third of its pairs, more than the slack: a new analysis.
   const std::vector<std::pair<int, int>> kept(pairs.begin(), pairs.begin() + 3);
   sys.prepare(4, kept, true);
   EXPECT_EQ(sys.decoupled(), 0u);
+  EXPECT_EQ(sys.analyses(), 4u);
+}
+
+TEST(CoupledSystem, APatternWithAFewPairsMoreIsReused)
+{
+  // A chain of 300 blocks and one long edge: least squares without the long edge reuses the
+  // pattern (one pair in 300 more, within the slack), its solve unchanged by the structural
+  // zeros; a subset with many pairs fewer gets its own analysis.
+  std::vector<std::pair<int, int>> chain;
+  for (int a = 0; a + 1 < 300; ++a) chain.emplace_back(a, a + 1);
+  std::vector<std::pair<int, int>> with_long = chain;
+  with_long.emplace_back(299, 0);  // reversed: the same pair as (0, 299)
+  CoupledSystem sys;
+  sys.prepare(300, with_long, false);
+  sys.prepare(300, chain, false);
+  EXPECT_EQ(sys.analyses(), 1u);
+  NormalEquations& ne = sys.equations();
+  NormalEquations own(300, chain);
+  for (NormalEquations* e : {&ne, &own})
+  {
+    e->setZero();
+    for (int a = 0; a < 300; ++a) e->addDiagonal(a, 3.0 * Eigen::Matrix3d::Identity());
+    for (const auto& [a, b] : chain) e->addOffDiagonal(a, b, -Eigen::Matrix3d::Identity());
+    e->gradient().setLinSpaced(900, -1.0, 1.0);
+  }
+  Eigen::VectorXd dx, dx_own;
+  ASSERT_TRUE(ne.solveDamped(1e-3, dx));
+  ASSERT_TRUE(own.solveDamped(1e-3, dx_own));
+  EXPECT_LT((dx - dx_own).norm(), 1e-9 * dx_own.norm());
+  sys.prepare(300, std::vector<std::pair<int, int>>(chain.begin(), chain.begin() + 100), false);
+  EXPECT_EQ(sys.analyses(), 2u);
 }
 
 TEST(CoupledSystem, DecoupledEdgeAddsOnlyItsDiagonalBlocks)
