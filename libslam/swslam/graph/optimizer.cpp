@@ -498,6 +498,10 @@ OptimizationReport refitKept(GraphProblem& problem, const KindKernels& kernels, 
   return refit;
 }
 
+/** gnc: the share of the edges switched off by the target kernel after a stage up to which the
+ * graduation ends there. */
+constexpr double kFewOutliers = 0.01;
+
 /** Graduated stages stop lowering the shape's bound here; a lower target comes next. */
 constexpr double kLowestGraduatedAlpha = -10.0;
 
@@ -569,11 +573,13 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     // the estimate has settled: from a poor guess every residual is large, so the first
     // scales are wide and the shapes near 2 until the poses come near the inliers.
     if (last || (!limited && k > 0 && settled(previous, kernels, params.adaptive_alpha_step))) break;
-    // gnc: no outlier evidence, no edge that the target kernel would switch off at these
-    // poses. The lower shapes would weigh every edge about as least squares does: go
-    // straight to least squares (a false edge the graph absorbed shows up there, and is
-    // taken out by the refit).
-    if (!adaptive && switchedOffEdges(problem, target, params.switched_off_weight).empty())
+    // gnc: little outlier evidence, at most kFewOutliers of the edges that the target kernel
+    // would switch off at these poses: go straight to least squares on the others. With none,
+    // the lower shapes would weigh every edge about as least squares does; with a few, the
+    // graph's poses are already near the inliers' optimum, and the refit rounds take back an
+    // edge that agrees with it and take out one the graph had absorbed.
+    if (!adaptive && static_cast<double>(switchedOffEdges(problem, target, params.switched_off_weight).size()) <=
+                         kFewOutliers * static_cast<double>(problem.edges.size()))
     {
       kernels = target;
       break;
