@@ -7,7 +7,7 @@
 # (scripts/install-deps.sh --with-bench), Ceres with a Cauchy loss; the same on MRPT's 50-node
 # circle graph. Per case: distance to the outlier-free optimum, the chi2 of the true edges at
 # the result against the optimum's, the edges switched off (precision, recall against the
-# false loops), time, iterations. Then the solver comparison of
+# false loops), wall and CPU time, iterations. Then the solver comparison of
 # swslam-bench-graph (ours vs MRPT vs Ceres).
 # Usage: scripts/bench-graph.sh [NODES]   (needs a build: scripts/build.sh)
 set -euo pipefail

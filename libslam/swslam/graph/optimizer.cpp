@@ -542,8 +542,10 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     // The convex first stage couples every edge: from the given poses the true loops are as
     // far off as the false ones (drift), and decoupling them there spoiled the stage (with
     // no false loop, 145 edges decoupled after its first step, and 69 true edges ended
-    // switched off by the target kernel instead of none).
-    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, k > 0});
+    // switched off by the target kernel instead of none). The adaptive kernel decouples
+    // nothing: with it, 100 random false loops ended 0.027 m off with a true edge switched
+    // off, against 0.0004 m.
+    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, !adaptive && k > 0});
     if (k == 0)
     {
       total = s;
