@@ -1,8 +1,8 @@
 // GraphModule: each node enters the graph placed on the graph's estimate of the previous node
 // and goes to the map at its optimized pose; a loop verified by PLICP pulls a drifted chain
 // back; an edge the graph refuses is counted, not fatal; nodes out of order are an error;
-// a wrong consecutive edge (90 degrees) against three true loops is switched off by gnc and
-// adaptive, not by the default fixed kernel.
+// a wrong consecutive edge (90 degrees) against three true loops is switched off and the
+// loop comes back.
 #include <swslam/system/config.h>
 #include <swslam/system/graph_module.h>
 
@@ -11,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <algorithm>
 #include <memory>
 
 #include "room_loop.h"
@@ -218,16 +217,16 @@ WrongEdgeRun wrongConsecutiveEdge(const SystemParams& params)
 
 TEST(GraphModule, APlantedWrongConsecutiveEdgeIsSwitchedOffAndTheTrajectoryComesBack)
 {
-  // Every setting of config/default.ini. Graduated non-convexity and the adaptive kernel weigh
-  // the three loops against the chain from a convex start, switch the wrong edge off (alone),
-  // and every node comes back within 0.05 m. The default schedule, the fixed kernel, starts at
-  // the chain's guess, where the loops are some 180 standard deviations off and the wrong edge
-  // fits: it keeps the chain and switches the three loops off (the last node 7.9 m off):
-  // doc/graph-optimization.md.
+  // Every setting of config/default.ini, and its kernel schedule changed to the others: the
+  // wrong edge is switched off, alone, and every node comes back within 0.05 m. With the fixed
+  // kernel (the default) that takes the whole-graph optimization's second start: from the
+  // chain's guess, where the loops are some 180 standard deviations off and the wrong edge
+  // fits, the fixed kernel alone keeps the chain and switches the three loops off (the last
+  // node 7.9 m off; cost 204 against 57 for GNC's result).
   const SystemParams params = loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   ASSERT_EQ(params.graph_optimizer.kernel_schedule, graph::KernelSchedule::Fixed);
   ASSERT_TRUE(params.graph_optimizer.isRobust(graph::EdgeKind::Consecutive));
-  for (const auto schedule : {graph::KernelSchedule::Gnc, graph::KernelSchedule::Adaptive})
+  for (const auto schedule : {graph::KernelSchedule::Fixed, graph::KernelSchedule::Gnc, graph::KernelSchedule::Adaptive})
   {
     SCOPED_TRACE(graph::kernelScheduleName(schedule));
     SystemParams p = params;
@@ -236,8 +235,4 @@ TEST(GraphModule, APlantedWrongConsecutiveEdgeIsSwitchedOffAndTheTrajectoryComes
     EXPECT_EQ(run.switched_off, std::vector<size_t>{run.wrong_edge});
     EXPECT_LT(run.worst, 0.05) << "node " << run.worst_node;
   }
-  const WrongEdgeRun fixed = wrongConsecutiveEdge(params);
-  EXPECT_GT(fixed.worst, 1.0);
-  EXPECT_EQ(fixed.switched_off.size(), 3u);
-  EXPECT_EQ(std::count(fixed.switched_off.begin(), fixed.switched_off.end(), fixed.wrong_edge), 0);
 }
