@@ -24,7 +24,7 @@ int main(int argc, char** argv)
     TCLAP::ValueArg<double> max_range("", "max-range",
                                       "Force the maximum range [m] (default: from the log)",
                                       false, 0, "metres", cmd);
-    TCLAP::SwitchArg laser_only("", "laser-only", "Drop ODOM lines", cmd);
+    TCLAP::SwitchArg laser_only("", "laser-only", "Drop the odometry (ODOM lines, or the FLASER/RLASER odom_* fields of a log without them)", cmd);
     TCLAP::SwitchArg reference_odometry(
         "", "reference-odometry",
         "Write each scan's reference pose as odometry before it (needs --laser-only "

@@ -79,7 +79,15 @@ std::string formatCarmenStats(const CarmenStats& s)
       << l.rays << "\n";
   }
   o << "odometry: " << s.odometry;
-  if (s.odometry_dropped) o << " (" << s.odometry_dropped << " ODOM lines dropped: laser only)";
+  const bool fields = s.odometry_source == CarmenOdometrySource::LaserFields;
+  if (s.odometry_source == CarmenOdometrySource::None)
+    o << " (the log has none)";
+  else if (s.odometry_dropped)
+    o << " (" << s.odometry_dropped << (fields ? " laser-line odometry readings" : " ODOM lines")
+      << " dropped: laser only)";
+  else
+    o << (fields ? " (from the FLASER/RLASER odom_x odom_y odom_theta fields: the log has no ODOM lines)"
+                 : " (from the ODOM lines)");
   o << "\nPARAM lines: " << s.params << "\n";
   o << "malformed lines: " << s.malformed;
   if (s.malformed) o << " (first at line " << s.first_malformed_line << ")";

@@ -147,7 +147,8 @@ CarmenLine parseCarmenLine(const std::string& line)
     readRanges(f, laser);
     laser.has_pose = true;
     laser.robot_pose = f.pose("x y theta");
-    f.pose("odom_x odom_y odom_theta");
+    laser.has_odometry = true;
+    laser.odometry_pose = f.pose("odom_x odom_y odom_theta");
   }
   else if (isRobotLaser(msg))
   {

@@ -42,6 +42,10 @@ struct CarmenLaser
   /** Global laser pose (ROBOTLASER only): the sensor offset is robot_pose^-1 + laser_pose. */
   bool has_laser_pose = false;
   mrpt::math::TPose2D laser_pose;
+  /** The robot's odometry pose when the scan was taken (FLASER/RLASER odom_x odom_y
+   * odom_theta): a raw log's odometry, the reference pose again in a corrected log. */
+  bool has_odometry = false;
+  mrpt::math::TPose2D odometry_pose;
   double timestamp = 0;  ///< ipc_timestamp [s]
 };
 

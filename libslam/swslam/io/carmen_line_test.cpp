@@ -28,6 +28,10 @@ TEST(CarmenLine, ParsesFlaserFields)
   ASSERT_TRUE(l.laser.has_pose);
   EXPECT_DOUBLE_EQ(l.laser.robot_pose.x, 1);  // x y theta, not the odometry fields
   EXPECT_DOUBLE_EQ(l.laser.robot_pose.phi, 0.5);
+  ASSERT_TRUE(l.laser.has_odometry);
+  EXPECT_DOUBLE_EQ(l.laser.odometry_pose.x, 1.1);
+  EXPECT_DOUBLE_EQ(l.laser.odometry_pose.y, 2.1);
+  EXPECT_DOUBLE_EQ(l.laser.odometry_pose.phi, 0.6);
   EXPECT_DOUBLE_EQ(l.laser.timestamp, 12.25);  // ipc_timestamp, not the logger's
 }
 
@@ -38,6 +42,7 @@ TEST(CarmenLine, ParsesRobotLaserAndRawLaser)
       "1.2 2 0.3 1 2 0.3 0.1 0.2 0 0 0 13.5 host 13.6");
   ASSERT_EQ(r.kind, CarmenLine::Kind::Laser);
   EXPECT_TRUE(r.laser.has_geometry && r.laser.has_pose && r.laser.has_laser_pose);
+  EXPECT_FALSE(r.laser.has_odometry);  // a single robot pose: the reference
   EXPECT_DOUBLE_EQ(r.laser.start_angle, -1.5);
   EXPECT_DOUBLE_EQ(r.laser.fov, 3);
   EXPECT_DOUBLE_EQ(r.laser.resolution, 1.5);

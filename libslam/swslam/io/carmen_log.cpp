@@ -86,7 +86,8 @@ void CarmenLogReader::prescan()
   open();
   std::map<std::string, SaturationDetector> detectors;
   std::map<std::string, std::vector<double>> times;
-  size_t stamps = 0, out_of_range = 0, first_out_line = 0;
+  size_t stamps = 0, out_of_range = 0, first_out_line = 0, odom_lines = 0;
+  bool laser_odometry = false;
   double first_out = 0;
   std::string text;
   for (;;)
@@ -108,6 +109,8 @@ void CarmenLogReader::prescan()
     {
       continue;
     }
+    if (line.kind == CarmenLine::Kind::Odometry) odom_lines++;
+    if (line.kind == CarmenLine::Kind::Laser) laser_odometry |= line.laser.has_odometry;
     const bool odometry = line.kind == CarmenLine::Kind::Odometry && !params_.laser_only;
     if (!odometry && line.kind != CarmenLine::Kind::Laser) continue;
     const double stamp = odometry ? line.odometry.timestamp : line.laser.timestamp;
@@ -132,6 +135,9 @@ void CarmenLogReader::prescan()
                                     params_.saturation_min_count).first;
     for (float r : laser.ranges) it->second.add(r);
   }
+  stats_.odometry_source = odom_lines > 0  ? CarmenOdometrySource::OdomLines
+                           : laser_odometry ? CarmenOdometrySource::LaserFields
+                                            : CarmenOdometrySource::None;
   for (const auto& [label, d] : detectors)
   {
     saturation_[label] = d.threshold();
@@ -259,9 +265,32 @@ void CarmenLogReader::convertLaser(const CarmenLaser& laser, CarmenRecord& recor
   record.observation = scan;
 }
 
+CarmenRecord CarmenLogReader::laserOdometry(const CarmenLaser& laser, const CarmenRecord& scan)
+{
+  // As an ODOM line would give it, at the scan's own (written) time: the run then reads the
+  // odometry at the scan exactly. The line has no velocities.
+  auto obs = mrpt::obs::CObservationOdometry::Create();
+  obs->sensorLabel = "ODOM";
+  obs->timestamp = scan.observation->timestamp;
+  obs->odometry = mrpt::poses::CPose2D(laser.odometry_pose);
+  CarmenRecord record;
+  record.observation = obs;
+  record.timestamp = scan.timestamp;
+  record.raw_timestamp = scan.raw_timestamp;
+  record.line = scan.line;
+  stats_.odometry++;
+  return record;
+}
+
 bool CarmenLogReader::next(CarmenRecord& record)
 {
   record = CarmenRecord();
+  if (pending_)
+  {
+    record = std::move(*pending_);
+    pending_.reset();
+    return true;
+  }
   std::string text;
   while (nextLine(text))
   {
@@ -288,6 +317,16 @@ bool CarmenLogReader::next(CarmenRecord& record)
       case CarmenLine::Kind::Laser:
         if (!keepStamp(line.laser.label, line.laser.timestamp)) continue;
         convertLaser(line.laser, record);
+        if (stats_.odometry_source == CarmenOdometrySource::LaserFields && line.laser.has_odometry)
+        {
+          if (params_.laser_only)
+            stats_.odometry_dropped++;
+          else
+          {
+            pending_ = std::move(record);
+            record = laserOdometry(line.laser, *pending_);
+          }
+        }
         return true;
       case CarmenLine::Kind::Odometry:
       {

@@ -1,8 +1,11 @@
 #pragma once
 // Streaming conversion of CARMEN logs (plain or gzip) into MRPT observations:
 // CObservation2DRangeScan for FLASER, RLASER, ROBOTLASER1/2, RAWLASER1..4 and
-// CObservationOdometry for ODOM, each with its line's own timestamp. PARAM lines set the
-// laser offsets, FOV and maximum range. Rules (max range, FOV, timestamps): doc/carmen.md.
+// CObservationOdometry for ODOM, each with its line's own timestamp. A log without ODOM lines
+// (a raw log: Freiburg's .clf) has its odometry in the FLASER/RLASER odom_x odom_y odom_theta
+// fields instead: each becomes a CObservationOdometry at its scan's timestamp, just before
+// the scan. PARAM lines set the laser offsets, FOV and maximum range. Rules (max range, FOV,
+// timestamps, odometry): doc/carmen.md.
 
 #include <swslam/io/gzip_file.h>
 #include <swslam/io/read_progress.h>
@@ -33,9 +36,20 @@ struct CarmenSensorStats
   std::string max_range_source;
 };
 
+/** Where a log's odometry is: its ODOM lines, else the odometry fields of its laser lines. */
+enum class CarmenOdometrySource
+{
+  None,        ///< neither
+  OdomLines,   ///< ODOM lines (the laser lines' odometry fields are not used)
+  LaserFields  ///< no ODOM line: FLASER/RLASER odom_x odom_y odom_theta
+};
+
 struct CarmenStats
 {
-  size_t lines = 0, params = 0, odometry = 0, odometry_dropped = 0;
+  size_t lines = 0, params = 0;
+  /** Odometry readings converted, and dropped (CarmenParams::laser_only), from `odometry_source`. */
+  size_t odometry = 0, odometry_dropped = 0;
+  CarmenOdometrySource odometry_source = CarmenOdometrySource::None;
   size_t malformed = 0, first_malformed_line = 0;
   std::map<std::string, size_t> unknown_messages;      ///< message type -> lines skipped
   std::map<std::string, CarmenSensorStats> lasers;     ///< by label (FLASER...)
@@ -105,6 +119,8 @@ class CarmenLogReader
   /** True if the line's stamp is in range; else counts and reports the skipped line. */
   bool keepStamp(const std::string& stream, double raw);
   void convertLaser(const CarmenLaser& laser, CarmenRecord& record);
+  /** The odometry reading of `scan`'s laser line, at the scan's timestamp. */
+  CarmenRecord laserOdometry(const CarmenLaser& laser, const CarmenRecord& scan);
 
   std::string path_;
   CarmenParams params_;
@@ -122,6 +138,7 @@ class CarmenLogReader
   std::map<std::string, std::string> reported_geometry_;
   size_t printed_malformed_ = 0, printed_timestamps_ = 0, printed_geometry_ = 0;
   CarmenStats stats_;
+  std::optional<CarmenRecord> pending_;  ///< a scan to return after its line's odometry
 };
 
 /** Human-readable summary of a conversion, one fact per line. */

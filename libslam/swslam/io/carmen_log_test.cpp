@@ -533,3 +533,101 @@ TEST(CarmenLog, ALogInMicrosecondsIsRefusedSayingSo)
     EXPECT_NE(what.find("not converted"), std::string::npos) << what;
   }
 }
+
+namespace
+{
+/** A raw log: FLASER lines whose odometry fields (a pose drifting from the reference) differ
+ * from their x y theta, one repeated timestamp, and no ODOM line. */
+std::string rawLog()
+{
+  std::ostringstream s;
+  s << "PARAM robot_frontlaser_offset 0.1 nohost 0\n";
+  for (int k = 0; k < 4; k++)
+  {
+    const double t = k == 2 ? 20.1 : 20 + 0.1 * k;  // scan 2 repeats scan 1's time
+    std::ostringstream l;
+    l << "FLASER 180";
+    for (int i = 0; i < 180; i++) l << " " << 2 + 0.01 * i;
+    l << " " << 0.5 * k << " 0 0 " << 0.55 * k << " " << 0.01 * k << " " << 0.02 * k << " " << t << " h " << t;
+    s << l.str() << "\n";
+  }
+  return s.str();
+}
+}  // namespace
+
+TEST(CarmenLog, ALogWithoutOdomLinesHasItsOdometryInTheLaserLines)
+{
+  const auto dir = swslam::test::tempDir("carmen_raw_odometry");
+  swslam::io::CarmenParams params;
+  params.repair_timestamps = true;
+  const auto c = convert(writeLog(dir, rawLog()), params);
+  EXPECT_EQ(c.stats.odometry_source, swslam::io::CarmenOdometrySource::LaserFields);
+  EXPECT_EQ(c.stats.odometry, 4u);
+  ASSERT_EQ(c.records.size(), 8u);
+  // Each scan right after its line's odometry, at the scan's written (repaired) time.
+  for (int k = 0; k < 4; k++)
+  {
+    SCOPED_TRACE(k);
+    const auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(c.records[2 * k].observation);
+    const auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(c.records[2 * k + 1].observation);
+    ASSERT_TRUE(odo && scan);
+    EXPECT_EQ(odo->sensorLabel, "ODOM");
+    EXPECT_EQ(odo->timestamp, scan->timestamp);
+    EXPECT_EQ(c.records[2 * k].line, c.records[2 * k + 1].line);
+    EXPECT_FALSE(c.records[2 * k].reference_pose);
+    EXPECT_NEAR(odo->odometry.x(), 0.55 * k, 1e-12);
+    EXPECT_NEAR(odo->odometry.y(), 0.01 * k, 1e-12);
+    EXPECT_NEAR(odo->odometry.phi(), 0.02 * k, 1e-12);
+    EXPECT_NEAR(c.records[2 * k + 1].reference_pose->x(), 0.5 * k, 1e-12);  // x y theta stays the reference
+  }
+  EXPECT_GT(toSec(c.records[4].observation->timestamp), toSec(c.records[2].observation->timestamp) + 0.05);  // repaired
+  EXPECT_NE(swslam::io::formatCarmenStats(c.stats).find("odometry: 4 (from the FLASER/RLASER odom_x odom_y "
+                                                         "odom_theta fields: the log has no ODOM lines)"),
+            std::string::npos);
+
+  // Read as a run reads the log directly: each scan's increment is its odometry's motion.
+  swslam::io::ScanSourceOptions so;
+  const auto source = swslam::io::openScanSource(dir + "/excerpt.log", so, params);
+  EXPECT_NE(source->describe().find("odom_x odom_y odom_theta"), std::string::npos) << source->describe();
+  swslam::sensor::ScanInput in;
+  for (int k = 0; k < 4; k++)
+  {
+    ASSERT_TRUE(source->next(in));
+    if (k == 0) continue;
+    ASSERT_TRUE(in.odometry_increment);
+    const mrpt::poses::CPose2D want =
+        mrpt::poses::CPose2D(0.55 * k, 0.01 * k, 0.02 * k) - mrpt::poses::CPose2D(0.55 * (k - 1), 0.01 * (k - 1), 0.02 * (k - 1));
+    EXPECT_NEAR((*in.odometry_increment - want).norm(), 0, 1e-9) << k;
+    EXPECT_NEAR(in.odometry_increment->phi(), 0.02, 1e-9) << k;
+  }
+
+  params.laser_only = true;
+  const auto laser_only = convert(writeLog(dir, rawLog()), params);
+  EXPECT_EQ(laser_only.records.size(), 4u);
+  EXPECT_EQ(laser_only.stats.odometry, 0u);
+  EXPECT_EQ(laser_only.stats.odometry_dropped, 4u);
+  EXPECT_NE(swslam::io::formatCarmenStats(laser_only.stats).find("odometry: 0 (4 laser-line odometry readings dropped"),
+            std::string::npos);
+}
+
+TEST(CarmenLog, ALogWithOdomLinesKeepsThemAndIgnoresTheLaserLinesOdometry)
+{
+  // The corrected logs: ODOM lines, and odometry fields that repeat the reference pose.
+  const auto dir = swslam::test::tempDir("carmen_odom_lines");
+  const auto c = convert(writeLog(dir, excerpt()), swslam::io::CarmenParams());
+  EXPECT_EQ(c.stats.odometry_source, swslam::io::CarmenOdometrySource::OdomLines);
+  EXPECT_EQ(c.stats.odometry, 2u);
+  size_t odometry = 0;
+  for (const auto& r : c.records)
+    if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(r.observation))
+    {
+      odometry++;
+      EXPECT_NEAR(odo->velocityLocal.vx, 0.1, 1e-12);  // an ODOM line's
+    }
+  EXPECT_EQ(odometry, 2u);
+
+  std::ofstream(dir + "/none.log") << "RAWLASER1 0 -1.5 3 0.5 30 0.01 0 7 1 2 3 4 5 6 7 0 10.4 h 10.4\n";
+  const auto none = convert(dir + "/none.log", swslam::io::CarmenParams());
+  EXPECT_EQ(none.stats.odometry_source, swslam::io::CarmenOdometrySource::None);
+  EXPECT_NE(swslam::io::formatCarmenStats(none.stats).find("odometry: 0 (the log has none)"), std::string::npos);
+}

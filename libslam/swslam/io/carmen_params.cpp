@@ -28,7 +28,7 @@ void CarmenParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std:
   c.write(s, "repair_timestamps", repair_timestamps, -1, -1, "strictly increasing streams");
   c.write(s, "max_timestamp_gap", max_timestamp_gap, -1, -1, "[s] larger steps: problems");
   c.write(s, "default_period", default_period, -1, -1, "[s] repair period if none in the log");
-  c.write(s, "laser_only", laser_only, -1, -1, "drop ODOM lines");
+  c.write(s, "laser_only", laser_only, -1, -1, "drop the odometry: ODOM lines, or the laser lines' odom_* fields of a log without them");
   c.write(s, "max_printed_warnings", max_printed_warnings, -1, -1, "printed per kind; all counted");
 }
 

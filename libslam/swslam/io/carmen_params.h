@@ -24,7 +24,7 @@ struct CarmenParams : public mrpt::config::CLoadableOptions
   double max_timestamp_gap = 3600;
   /** [s] repair period of a stream with no usable positive period. */
   double default_period = 0.1;
-  /** Drop ODOM lines. */
+  /** Drop the odometry: ODOM lines, or the laser lines' odom_* fields of a log without them. */
   bool laser_only = false;
   /** Warnings printed per kind (malformed line, timestamp); all are counted. */
   uint64_t max_printed_warnings = 5;

@@ -138,7 +138,7 @@ class CarmenSource : public SourceBase
 {
  public:
   CarmenSource(const std::string& path, const ScanSourceOptions& opts, const CarmenParams& carmen)
-      : SourceBase(opts), path_(path), reader_(path, carmen)
+      : SourceBase(opts), path_(path), reader_(path, carmen), laser_only_(carmen.laser_only)
   {
   }
   bool next(sensor::ScanInput& out) override
@@ -148,12 +148,25 @@ class CarmenSource : public SourceBase
       if (take(record.observation, out)) return true;
     return false;
   }
-  std::string describe() const override { return "CARMEN log " + path_; }
+  std::string describe() const override
+  {
+    if (!opts_.use_odometry || laser_only_)
+      return "CARMEN log " + path_ + " (odometry not used)";
+    switch (reader_.stats().odometry_source)
+    {
+      case CarmenOdometrySource::OdomLines: return "CARMEN log " + path_ + " (odometry: ODOM lines)";
+      case CarmenOdometrySource::LaserFields:
+        return "CARMEN log " + path_ + " (odometry: the laser lines' odom_x odom_y odom_theta; no ODOM lines)";
+      case CarmenOdometrySource::None: break;
+    }
+    return "CARMEN log " + path_ + " (no odometry)";
+  }
   double fractionRead() const override { return reader_.fractionRead(); }
 
  private:
   std::string path_;
   CarmenLogReader reader_;
+  bool laser_only_;
 };
 
 /** A ROS bag: the scans of one LaserScan topic (their label) and the odometry of one topic. */

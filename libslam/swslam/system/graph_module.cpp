@@ -109,11 +109,39 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
   return correcting;
 }
 
+namespace
+{
+/** The whole graph with the fixed kernel; if that switched edges off, a second start from the
+ * same poses with graduated non-convexity, and the result of lower cost under the fixed kernel
+ * (the cost both minimize). Started at the chain's guess, the fixed kernel gives no weight to
+ * loops that disagree with the chain by far, right or wrong: a wrong consecutive edge keeps the
+ * chain and the true loops are switched off. GNC weighs them from a convex start
+ * (doc/graph-optimization.md). Its final least-squares solve costs a little more under the
+ * kernel when both switch the same edges off, so then the fixed result stays. */
+graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params)
+{
+  if (params.kernel_schedule != graph::KernelSchedule::Fixed)
+    return graph::optimizeFull(graph, params);
+  graph::PoseGraph second = graph;
+  graph::OptimizationReport report = graph::optimizeFull(graph, params);
+  if (report.switched_off.empty()) return report;
+  graph::GraphOptimizerParams gnc = params;
+  gnc.kernel_schedule = graph::KernelSchedule::Gnc;
+  const graph::OptimizationReport second_report = graph::optimizeFull(second, gnc);
+  const auto kernels = graph::uniformKernels(params.kernel());
+  const double cost = graph::robustCost(graph::fullSubproblem(graph, params).problem, kernels);
+  const double second_cost = graph::robustCost(graph::fullSubproblem(second, params).problem, kernels);
+  if (!(second_cost < cost)) return report;
+  graph = std::move(second);
+  return second_report;
+}
+}  // namespace
+
 void GraphModule::optimize(bool full, GraphStep& step)
 {
   step.full = full;
   std::lock_guard<std::mutex> lock(mutex_);
-  step.report = full ? graph::optimizeFull(graph_, graph_params_) : graph::optimizeWindow(graph_, graph_params_);
+  step.report = full ? optimizeFullTwice(graph_, graph_params_) : graph::optimizeWindow(graph_, graph_params_);
   const std::vector<graph::PoseGraph::TNodeID> ids =
       full ? graph_.nodeIds() : graph_.newestNodes(graph_params_.window_size);
   step.reinsert.scan = step.scan;
