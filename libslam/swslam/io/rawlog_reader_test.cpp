@@ -320,8 +320,31 @@ DamagedRead readDamaged(const std::string& path)
   return {read, error, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
 }
 
+/** The damaged rawlog gives a RawlogError quickly and with bounded memory, saying one of
+ * `whys`. */
+void expectBoundedDamage(const DamagedRead& r, const std::vector<std::string>& whys)
+{
+  ASSERT_TRUE(r.error) << "the damage went unnoticed";
+  const std::string what = r.error->what();
+  EXPECT_TRUE(std::any_of(whys.begin(), whys.end(), [&](const std::string& why) { return what.find(why) != std::string::npos; }))
+      << what;
+  // A bound, not a benchmark: 0.5 s at most when measured in Release; 3-8 s under
+  // AddressSanitizer, where the child fills its budget with small allocations first.
+  EXPECT_LT(r.seconds, 20.0) << what;
+  rusage self{}, children{};
+  getrusage(RUSAGE_SELF, &self);
+  getrusage(RUSAGE_CHILDREN, &children);
+  EXPECT_LT(self.ru_maxrss, 1 << 20) << "the test process grew past 1 GB (KB: " << self.ru_maxrss << ")";
+  // The decoder's budget: 1 GB beyond its size at the fork (at most the test process's
+  // peak), plus what it touches in one period of the watch of its resident memory.
+  EXPECT_LT(children.ru_maxrss, self.ru_maxrss + (1 << 20) + (128 << 10))
+      << "a decoder grew past its 1 GB budget (KB: " << children.ru_maxrss << ", the test process's peak "
+      << self.ru_maxrss << ")";
+  std::cerr << "read in " << r.seconds << " s, decoder's peak " << children.ru_maxrss / 1024 << " MB: " << what << "\n";
+}
+
 /** The damaged rawlog gives a RawlogError at entry `entry` (offset `offset`) after the `items`
- * good ones, quickly and with bounded memory, saying `why`. */
+ * good ones, quickly and with bounded memory, saying one of `whys`. */
 void expectDamageAt(const DamagedRead& r, size_t items, size_t entry, uint64_t offset,
                     const std::vector<std::string>& whys)
 {
@@ -332,15 +355,7 @@ void expectDamageAt(const DamagedRead& r, size_t items, size_t entry, uint64_t o
   EXPECT_NE(what.find("entry #" + std::to_string(entry) + " (at byte " + std::to_string(offset) + ")"),
             std::string::npos)
       << what;
-  EXPECT_TRUE(std::any_of(whys.begin(), whys.end(), [&](const std::string& why) { return what.find(why) != std::string::npos; }))
-      << what;
-  EXPECT_LT(r.seconds, 5.0) << what;  // a bound, not a benchmark: 0.5 s at most when measured
-  rusage self{}, children{};
-  getrusage(RUSAGE_SELF, &self);
-  getrusage(RUSAGE_CHILDREN, &children);
-  EXPECT_LT(self.ru_maxrss, 1 << 20) << "the test process grew past 1 GB (KB: " << self.ru_maxrss << ")";
-  EXPECT_LT(children.ru_maxrss, 1 << 20) << "a decoder grew past 1 GB (KB: " << children.ru_maxrss << ")";
-  std::cerr << "read in " << r.seconds << " s, decoder's peak " << children.ru_maxrss / 1024 << " MB: " << what << "\n";
+  expectBoundedDamage(r, whys);
 }
 }  // namespace
 
@@ -383,6 +398,29 @@ TEST(RawlogReader, ADamagedRayCountInsideASensoryFrameIsAnErrorNamingTheEntry)
     return count_at;
   });
   expectDamageAt(readDamaged(r.path), 5, 5, r.offsets[5], {kOverBudget, "the decoder crashed with SIG"});
+}
+
+TEST(RawlogReader, TheFuzzersDamagedCountsAreTheBudgetsError)
+{
+  // tests/fuzz/mrpt-findings/rawlog_reader: rawlogs of a few hundred bytes found by the fuzzer
+  // (doc/reliability.md), on which MRPT asks for 0.4 to 7.5 GB, at once or bit by bit.
+  const std::string dir = std::string(SWSLAM_SOURCE_DIR) + "/tests/fuzz/mrpt-findings/rawlog_reader/";
+  const std::vector<std::string> over_budget{kOverBudget};
+  // The 7.5 GB is an aligned_alloc, which returns null under the address-space limit and MRPT
+  // writes there; under AddressSanitizer it is the budget's report.
+  const std::vector<std::string> or_crash{kOverBudget, "the decoder crashed with SIGSEGV"};
+  const std::vector<std::pair<std::string, std::vector<std::string>>> findings{
+      {"action-collection-442MB.rawlog", over_budget},
+      {"action-collection-rss-4GB.rawlog", over_budget},
+      {"motion-particles-960MB.rawlog", over_budget},
+      {"scan-label-string-1.9GB.rawlog", over_budget},
+      {"scan-rays-7.5GB-other-namespace.rawlog", or_crash}};
+  for (const auto& [file, whys] : findings)
+  {
+    SCOPED_TRACE(file);
+    expectBoundedDamage(readDamaged(dir + file), whys);
+  }
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), ptrdiff_t(findings.size()));
 }
 
 TEST(RawlogReader, AnActionEntryThatCrashesMrptIsAnErrorNamingTheEntry)

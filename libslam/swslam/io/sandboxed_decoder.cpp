@@ -7,19 +7,19 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <new>
 #include <poll.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
 namespace swslam::io
 {
-/** The page the parent and the child share: where the child is, and whether an allocation
- * failed (the address-space limit was reached). */
+/** The page the parent and the child share: where the child is, and whether it went over its
+ * memory budget. */
 struct SandboxedDecoder::Shared
 {
   std::atomic<uint64_t> index{0};
@@ -53,12 +53,74 @@ constexpr int kPipeBytes = 1 << 20;
 /** An error's message is cut to this (MRPT's carry call stacks). */
 constexpr size_t kMaxErrorMessage = 4096;
 
-std::atomic<int>* g_out_of_memory = nullptr;  // the child's only: set before its work runs
+/** Address space left beyond the budget under AddressSanitizer: an allocation the limit
+ * refuses is a sanitizer report there, which needs memory of its own to be written (its
+ * resident memory holds the child to the budget itself). */
+constexpr uint64_t kSanitizerReportReserve = uint64_t(512) << 20;
+
+// AddressSanitizer's, when the program runs under it (null otherwise).
+extern "C" void __asan_set_error_report_callback(void (*callback)(const char*)) __attribute__((weak));
+
+/** The exit status of a child stopped over its budget (the shared page says why). */
+constexpr int kOverBudgetExit = 9;
+
+// The child's only, set before its work runs.
+std::atomic<int>* g_out_of_memory = nullptr;
+uint64_t g_page_bytes = 4096;
+uint64_t g_resident_limit = 0;  ///< its resident size at the start plus the budget
 
 void onOutOfMemory()
 {
   if (g_out_of_memory) g_out_of_memory->store(1);
   throw std::bad_alloc();
+}
+
+/** Field `field` of /proc/self/statm in bytes (0: the address-space size, which RLIMIT_AS
+ * limits; 1: the resident size), 0 if unknown. Async-signal-safe: no allocation, no stdio. */
+uint64_t statmBytes(int field)
+{
+  char text[160];
+  const int fd = ::open("/proc/self/statm", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return 0;
+  const ssize_t n = ::read(fd, text, sizeof(text));
+  ::close(fd);
+  ssize_t k = 0;
+  for (int skip = 0; skip < field; skip++)
+  {
+    while (k < n && text[k] != ' ') k++;
+    k++;
+  }
+  uint64_t pages = 0;
+  for (; k < n && text[k] >= '0' && text[k] <= '9'; k++) pages = 10 * pages + static_cast<uint64_t>(text[k] - '0');
+  return pages * g_page_bytes;
+}
+
+/** The watch of the child's resident memory, every kResidentWatchPeriod of its CPU time
+ * (SIGPROF): memory the address-space limit does not see (AddressSanitizer's allocator maps its
+ * space in advance; pages mapped before the fork) is still within the budget. */
+void onWatchTick(int)
+{
+  const int interrupted_errno = errno;  // the interrupted code's, whatever it was doing
+  if (statmBytes(1) > g_resident_limit)
+  {
+    g_out_of_memory->store(1);
+    _exit(kOverBudgetExit);
+  }
+  errno = interrupted_errno;
+}
+
+/** Under AddressSanitizer an allocation the address-space limit refuses is a fatal report, not
+ * std::bad_alloc: that report is the budget's failure too (any other report goes on to end
+ * the child as a crash). */
+void onSanitizerReport(const char* report)
+{
+  for (const char* oom : {"AddressSanitizer: out of memory", "AddressSanitizer: out-of-memory",
+                          "AddressSanitizer: requested allocation size", "AddressSanitizer: allocation-size-too-big"})
+  {
+    if (!std::strstr(report, oom)) continue;
+    g_out_of_memory->store(1);
+    _exit(kOverBudgetExit);
+  }
 }
 
 bool writeFully(int fd, const char* buf, size_t len)
@@ -111,20 +173,12 @@ class PipeChannel : public DecodeChannel
   std::string buffer_;
 };
 
-/** The process's address-space size (what RLIMIT_AS limits), 0 if unknown. */
-uint64_t addressSpaceSize()
-{
-  std::ifstream statm("/proc/self/statm");
-  uint64_t pages = 0;
-  statm >> pages;
-  return pages * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
-}
-
 /** Sets the child apart from the parent: default crash signals (no core file), the terminal's
  * interrupt left to the parent, a closed pipe an error rather than a signal, no descriptor of
  * the parent's but the pipe and the standard ones (stdout goes to stderr: the parent's output
- * is its own), and the address-space limit. */
-void isolateChild(int fd, uint64_t memory_budget)
+ * is its own), and the memory budget: the address-space limit first, then the watch of its
+ * resident memory. */
+void isolateChild(int fd, uint64_t memory_budget, std::atomic<int>& out_of_memory)
 {
   for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM}) std::signal(sig, SIG_DFL);
   std::signal(SIGINT, SIG_IGN);
@@ -139,18 +193,31 @@ void isolateChild(int fd, uint64_t memory_budget)
   setrlimit(RLIMIT_CORE, &no_core);
   rlimit as{};
   getrlimit(RLIMIT_AS, &as);
-  const uint64_t limit = addressSpaceSize() + memory_budget;
+  g_page_bytes = static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
+  const bool sanitized = __asan_set_error_report_callback != nullptr;
+  const uint64_t limit = statmBytes(0) + memory_budget + (sanitized ? kSanitizerReportReserve : 0);
   if (as.rlim_max == RLIM_INFINITY || limit < as.rlim_max) as.rlim_cur = limit;
   setrlimit(RLIMIT_AS, &as);
+
+  g_out_of_memory = &out_of_memory;
+  std::set_new_handler(onOutOfMemory);
+  if (sanitized) __asan_set_error_report_callback(onSanitizerReport);
+  g_resident_limit = statmBytes(1) + memory_budget;
+  struct sigaction watch{};
+  watch.sa_handler = onWatchTick;
+  watch.sa_flags = SA_RESTART;
+  sigemptyset(&watch.sa_mask);
+  sigaction(SIGPROF, &watch, nullptr);
+  constexpr suseconds_t kPeriod = std::chrono::microseconds(kResidentWatchPeriod).count();
+  const itimerval every{{0, kPeriod}, {0, kPeriod}};
+  setitimer(ITIMER_PROF, &every, nullptr);
 }
 
 [[noreturn]] void runChild(const SandboxedDecoder::Work& work, int fd, std::atomic<uint64_t>& index,
                            std::atomic<uint64_t>& offset, std::atomic<uint64_t>& steps,
                            std::atomic<int>& out_of_memory, uint64_t memory_budget)
 {
-  isolateChild(fd, memory_budget);
-  g_out_of_memory = &out_of_memory;
-  std::set_new_handler(onOutOfMemory);
+  isolateChild(fd, memory_budget, out_of_memory);
   PipeChannel channel(fd, index, offset, steps);
   int code = 0;
   try

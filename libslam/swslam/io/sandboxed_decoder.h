@@ -1,8 +1,10 @@
 #pragma once
 // Decoding of untrusted input in a child process. A decoder that trusts the lengths it reads
 // (MRPT's deserializers do) crashes, or allocates gigabytes, on a damaged file; run in a
-// forked child under an address-space limit, its failure becomes an error of the parent that
-// names the place in the input and what happened, and the frames it sent before stay valid.
+// forked child under a memory budget (an address-space limit, and a watch of its resident
+// memory, which also holds under AddressSanitizer), its failure becomes an error of the parent
+// that names the place in the input and what happened, and the frames it sent before stay
+// valid.
 //
 // The child runs the work given to the constructor: before each risky step it marks where in
 // the input it is (a page shared with the parent, so that a crash can be placed), and it
@@ -56,10 +58,13 @@ class DecodeChannel
   virtual void send(double fraction, const std::string& payload) = 0;
 };
 
-/** Each decoder's child may grow its address space by this much beyond its size at the fork:
- * far above what one rawlog entry needs (a scan of 2^20 rays is 9 MB), far below what a
- * damaged count asks for (MRPT reached 23.6 GB on one). */
+/** Each decoder's child may grow its address space, and its resident memory, by this much
+ * beyond their sizes at the fork: far above what one rawlog entry needs (a scan of 2^20 rays
+ * is 9 MB), far below what a damaged count asks for (MRPT reached 23.6 GB on one). */
 constexpr uint64_t kDecoderMemoryBudget = uint64_t(1) << 30;
+/** How often the child's resident memory is compared with the budget, in its CPU time: it
+ * can overshoot by what it touches meanwhile (tens of MB). */
+constexpr std::chrono::microseconds kResidentWatchPeriod{10000};
 /** The largest frame the parent accepts (a frame is one re-serialized rawlog item). */
 constexpr uint64_t kMaxDecodedFrameBytes = uint64_t(256) << 20;
 /** A child that stays this long at one marked position while the parent waits for it is
@@ -75,8 +80,10 @@ class SandboxedDecoder
   using Work = std::function<void(DecodeChannel&)>;
 
   /** Forks the child that runs `work` with its address space limited to its size at the fork
-   * plus `memory_budget` bytes, and stopped if it stays `stall_timeout` at one marked
-   * position while the parent waits. Throws std::runtime_error if the child cannot be
+   * plus `memory_budget` bytes (RLIMIT_AS), and stopped if its resident memory grows by more
+   * than that (memory the limit does not see, e.g. under AddressSanitizer, whose allocator
+   * maps its space in advance) or if it stays `stall_timeout` at one marked position while
+   * the parent waits. Throws std::runtime_error if the child cannot be
    * started. */
   explicit SandboxedDecoder(Work work, uint64_t memory_budget = kDecoderMemoryBudget,
                             std::chrono::milliseconds stall_timeout = kDecoderStallTimeout);

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -131,6 +133,28 @@ TEST(SandboxedDecoder, AllocationsBeyondTheBudgetFailThere)
   }, kSmallBudget);
   EXPECT_STREQ(failureOf(bit_by_bit).what(), "decoding it needed more than 64 MB of memory (the decoder's budget)");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+}
+
+TEST(SandboxedDecoder, ResidentMemoryTheAddressSpaceLimitDoesNotSeeIsWithinTheBudgetToo)
+{
+  // Pages mapped before the fork are in the child's address space from its start: touching
+  // them grows only its resident memory, as AddressSanitizer's allocator does with the space
+  // it maps in advance (where RLIMIT_AS never fails an allocation).
+  constexpr size_t kMapped = size_t(512) << 20;
+  void* mapped = mmap(nullptr, kMapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  ASSERT_NE(mapped, MAP_FAILED);
+  const auto t0 = std::chrono::steady_clock::now();
+  SandboxedDecoder touching([mapped](DecodeChannel& ch) {
+    ch.mark({4, 40});
+    std::memset(mapped, 1, kMapped);
+    ch.send(0, "all touched");
+  }, kSmallBudget);
+  const DecodeFailure e = failureOf(touching);
+  munmap(mapped, kMapped);
+  EXPECT_STREQ(e.what(), "decoding it needed more than 64 MB of memory (the decoder's budget)");
+  EXPECT_EQ(e.at().index, 4u);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+  EXPECT_TRUE(noChildLeft());
 }
 
 TEST(SandboxedDecoder, ExitingWithoutTheEndIsAFailure)
