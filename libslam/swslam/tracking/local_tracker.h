@@ -49,7 +49,7 @@ struct TrackingStep
   mrpt::poses::CPose2D pose;      ///< vehicle pose of this scan in the map frame
   size_t keyframe = 0;            ///< the keyframe `relative` refers to (the new one if made)
   mrpt::poses::CPose2D relative;  ///< vehicle pose relative to that keyframe
-  plicp::MatchResult match;              ///< the match against the keyframe (status says if it failed)
+  plicp::MatchResult match;  ///< the match against the keyframe or local map, in the keyframe's sensor frame (status says if it failed)
   TrackingSource source = TrackingSource::First;
   bool new_keyframe = false;
   std::vector<graph::Constraint> edges;  ///< the new node's edges
@@ -83,8 +83,8 @@ class LocalTracker
                                        graph::EdgeKind kind) const;
   graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
-  /** The match of `scan` against the last keyframe from `guess` (sensor frame), re-aligned by
-   * the correlative search when its prediction failed. */
+  /** The match of `scan` from `guess` (the last keyframe's sensor frame) against the reference
+   * (matchReference()), re-aligned by the correlative search when its prediction failed. */
   plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, TrackingStep& step);
   /** The match of `scan` from `guess`, both in the last keyframe's sensor frame, against the
    * reference tracking uses: the local map's virtual scan seen from the guess
