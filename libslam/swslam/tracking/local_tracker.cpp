@@ -63,7 +63,7 @@ std::vector<correlative::Ray> LocalTracker::submapRays() const
 plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose2D& guess, TrackingStep& step)
 {
   const Keyframe& last = keyframes_.back();
-  plicp::MatchResult m = plicp::matchScans(*last.scan, scan, guess, plicp_);
+  plicp::MatchResult m = matchReference(scan, guess);
   if (!correlative_.enabled) return m;
   const correlative::SearchTrigger why = correlative::searchTrigger(m, guess, correlative_);
   // Once trust_prediction_after scans in a row confirmed their predictions, a match that
@@ -87,6 +87,51 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
   step.searched = true;
   if (s.replaced) step.source = TrackingSource::Searched;
   return s.match;
+}
+
+std::vector<MapScan> LocalTracker::localMap(const CPose2D& sensor_pose) const
+{
+  std::vector<MapScan> map;
+  const size_t n = static_cast<size_t>(tracking_.local_map_keyframes);
+  for (size_t k = keyframes_.size() > n ? keyframes_.size() - n : 0; k < keyframes_.size(); k++)
+  {
+    const Keyframe& kf = keyframes_[k];
+    const CPose2D at = kf.pose + kf.sensor_pose;
+    if (k + 1 == keyframes_.size() || (at.translation() - sensor_pose.translation()).norm() <= tracking_.local_map_radius)
+      map.push_back({at, &kf.scan->scan});
+  }
+  return map;
+}
+
+plicp::MatchResult LocalTracker::matchReference(const sensor::Scan& scan, const CPose2D& guess) const
+{
+  const Keyframe& last = keyframes_.back();
+  if (tracking_.local_map_keyframes == 0) return plicp::matchScans(*last.scan, scan, guess, plicp_);
+  // The local map seen from the guess; PLICP then starts at the virtual sensor itself.
+  const CPose2D seen_from = (last.pose + last.sensor_pose) + guess;
+  const plicp::ReferenceScan ref(virtualScan(localMap(seen_from), seen_from, scan, tracking_.min_range), plicp_);
+  return inReferenceFrame(plicp::matchScans(ref, scan, CPose2D(), plicp_), guess);
+}
+
+graph::Constraint LocalTracker::consecutiveEdge(const Keyframe& previous, const Keyframe& node,
+                                                const sensor::Scan& scan, const plicp::MatchResult& match) const
+{
+  if (!match.ok()) return priorEdge(previous, node);
+  plicp::MatchResult m = match;
+  if (tracking_.local_map_keyframes > 0)
+  {
+    // The pair of keyframes, from where the local map placed the node; a pair that fails or
+    // leaves the local map's basin keeps the local map's match.
+    const plicp::MatchResult pair = plicp::matchScans(*previous.scan, scan, match.pose, plicp_);
+    if (pair.ok() && (pair.pose.translation() - match.pose.translation()).norm() <= tracking_.dense_gate_xy &&
+        std::abs(std::remainder(pair.pose.phi() - match.pose.phi(), 2 * M_PI)) <= tracking_.dense_gate_theta)
+      m = pair;
+  }
+  graph::Constraint e{previous.id, node.id, geometry::vehicleMotion(previous.sensor_pose, m.pose),
+                      Eigen::Matrix3d::Identity(), graph::EdgeKind::Consecutive};
+  e.information = geometry::informationFromCovariance(
+      geometry::vehicleMotionCovariance(previous.sensor_pose, m.pose, m.covariance));
+  return e;
 }
 
 Keyframe& LocalTracker::addKeyframe(const sensor::Scan& scan, const CPose2D& pose)
@@ -190,15 +235,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   const size_t prev_id = keyframes_.back().id;
   Keyframe& node = addKeyframe(scan, step.pose);
   const Keyframe& previous = keyframes_[prev_id];
-  if (step.match.ok())
-  {
-    graph::Constraint e{prev_id, node.id, rel, Eigen::Matrix3d::Identity(), graph::EdgeKind::Consecutive};
-    e.information = geometry::informationFromCovariance(
-        geometry::vehicleMotionCovariance(previous.sensor_pose, step.match.pose, step.match.covariance));
-    step.edges.push_back(e);
-  }
-  else
-    step.edges.push_back(priorEdge(previous, node));
+  step.edges.push_back(consecutiveEdge(previous, node, scan, step.match));
   // Only recent nodes: older ones within reach are loop candidates, verified by the graph.
   std::vector<std::pair<double, size_t>> near;
   const size_t gap = static_cast<size_t>(tracking_.dense_max_index_gap);

@@ -1,6 +1,7 @@
 #pragma once
 // Local tracking (paper sec. II.C, Fig. 1-2): each scan is matched by PLICP against the
-// latest keyframe, starting from the previous relative pose moved by the expected motion.
+// latest keyframe, or a virtual scan of the last keyframes (local_map.h), starting from the
+// previous relative pose moved by the expected motion.
 // Past a translation or rotation threshold a new keyframe (graph node) is made; it is
 // connected to the previous node and, densely, to every node within a radius.
 
@@ -8,6 +9,7 @@
 #include <swslam/correlative/score_grid.h>
 #include <swslam/graph/constraint.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/tracking/local_map.h>
 #include <swslam/tracking/params.h>
 #include <swslam/tracking/steady_motion.h>
 
@@ -47,7 +49,7 @@ struct TrackingStep
   mrpt::poses::CPose2D pose;      ///< vehicle pose of this scan in the map frame
   size_t keyframe = 0;            ///< the keyframe `relative` refers to (the new one if made)
   mrpt::poses::CPose2D relative;  ///< vehicle pose relative to that keyframe
-  plicp::MatchResult match;              ///< the match against the keyframe (status says if it failed)
+  plicp::MatchResult match;  ///< the match against the keyframe or local map, in the keyframe's sensor frame (status says if it failed)
   TrackingSource source = TrackingSource::First;
   bool new_keyframe = false;
   std::vector<graph::Constraint> edges;  ///< the new node's edges
@@ -81,9 +83,20 @@ class LocalTracker
                                        graph::EdgeKind kind) const;
   graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
-  /** The match of `scan` against the last keyframe from `guess` (sensor frame), re-aligned by
-   * the correlative search when its prediction failed. */
+  /** The match of `scan` from `guess` (the last keyframe's sensor frame) against the reference
+   * (matchReference()), re-aligned by the correlative search when its prediction failed. */
   plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, TrackingStep& step);
+  /** The match of `scan` from `guess`, both in the last keyframe's sensor frame, against the
+   * reference tracking uses: the local map's virtual scan seen from the guess
+   * (local_map_keyframes > 0), or the last keyframe's scan. */
+  plicp::MatchResult matchReference(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess) const;
+  /** The last local_map_keyframes keyframes whose sensor lies within local_map_radius of
+   * `sensor_pose` (world frame), and the last keyframe always. */
+  std::vector<MapScan> localMap(const mrpt::poses::CPose2D& sensor_pose) const;
+  /** The consecutive edge of a new node from `match` (of its scan, in `previous`'s sensor
+   * frame): with a local map, PLICP of the pair of keyframes from it. */
+  graph::Constraint consecutiveEdge(const Keyframe& previous, const Keyframe& node, const sensor::Scan& scan,
+                                    const plicp::MatchResult& match) const;
   /** Rays of the last submap_keyframes keyframes in the last keyframe's sensor frame. */
   std::vector<correlative::Ray> submapRays() const;
 

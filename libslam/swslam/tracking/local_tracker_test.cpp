@@ -39,13 +39,18 @@ mrpt::obs::CObservation2DRangeScan scanAt(const test::World& world, const CPose2
 }
 }  // namespace
 
-TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges)
+namespace
+{
+/** Tracks the S-curve with a sensor mounted off the vehicle's centre, and checks every scan's
+ * pose and every keyframe edge against the truth. */
+void followPathAndCheckKeyframes(int local_map_keyframes)
 {
   const auto world = test::clutteredWorld(5);
   const CPose2D mount(0.3, 0.1, 0.05);
   const auto path = sCurve(300);
   std::mt19937 rng(1);
   TrackingParams tp;
+  tp.local_map_keyframes = local_map_keyframes;
   LocalTracker tracker(tp, plicp::PlicpParams());
   std::vector<size_t> scan_of_keyframe;
   size_t consecutive = 0;
@@ -78,6 +83,11 @@ TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges)
   EXPECT_GT(keyframes, 20u);  // 22 m travelled, a node every 0.5 m
   EXPECT_EQ(consecutive, keyframes - 1);
 }
+}  // namespace
+
+TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges) { followPathAndCheckKeyframes(0); }
+
+TEST(LocalTracker, FollowsAPathAgainstTheLocalMap) { followPathAndCheckKeyframes(5); }
 
 TEST(LocalTracker, DenseEdgesConnectNearbyNodes)
 {

@@ -24,6 +24,8 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
       c.read_double(s, "lost_prior_sigma_theta_DEG", mrpt::RAD2DEG(lost_prior_sigma_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(constant_velocity, bool);
   MRPT_LOAD_CONFIG_VAR_CS(max_interval_ratio, double);
+  MRPT_LOAD_CONFIG_VAR_CS(local_map_keyframes, int);
+  MRPT_LOAD_CONFIG_VAR_CS(local_map_radius, double);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -36,6 +38,8 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(dense_gate_xy > 0 && dense_gate_theta > 0, "dense_gate_xy and dense_gate_theta_DEG must be > 0");
   require(lost_prior_sigma_xy > 0 && lost_prior_sigma_theta > 0, "lost_prior_sigma_* must be > 0");
   require(max_interval_ratio >= 1, "max_interval_ratio must be >= 1");
+  require(local_map_keyframes >= 0, "local_map_keyframes must be >= 0");
+  require(local_map_radius > 0, "local_map_radius must be > 0");
 }
 
 void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -52,6 +56,8 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("lost_prior_sigma_theta_DEG", lost_prior_sigma_theta, "[deg] same for rotation");
   MRPT_SAVE_CONFIG_VAR_COMMENT(constant_velocity, "predict the previous motion over the new scan interval (false: per scan)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_interval_ratio, "...scaled by at most this (or 1 / this) times");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_keyframes, "scans match a virtual scan of the last this many keyframes (0: the last keyframe's scan)...");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_radius, "[m] ...those whose sensor is this close to the predicted one");
 }
 
 }  // namespace swslam::tracking

@@ -21,6 +21,8 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
   bool constant_velocity = true;   ///< predict the previous motion over the new scan interval (false: per scan)
   double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
+  int local_map_keyframes = 0;      ///< scans match a virtual scan of the last this many keyframes (0: the last keyframe's scan)...
+  double local_map_radius = 10.0;   ///< [m] ...those whose sensor is this close to the predicted one
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
