@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/bits_math.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace swslam::tracking
@@ -24,6 +25,8 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
       c.read_double(s, "lost_prior_sigma_theta_DEG", mrpt::RAD2DEG(lost_prior_sigma_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(constant_velocity, bool);
   MRPT_LOAD_CONFIG_VAR_CS(max_interval_ratio, double);
+  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_factor, double);
+  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_take_prior, bool);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -36,6 +39,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(dense_gate_xy > 0 && dense_gate_theta > 0, "dense_gate_xy and dense_gate_theta_DEG must be > 0");
   require(lost_prior_sigma_xy > 0 && lost_prior_sigma_theta > 0, "lost_prior_sigma_* must be > 0");
   require(max_interval_ratio >= 1, "max_interval_ratio must be >= 1");
+  require(ambiguity_factor >= 0 && std::isfinite(ambiguity_factor), "ambiguity_factor must be >= 0");
 }
 
 void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -52,6 +56,8 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("lost_prior_sigma_theta_DEG", lost_prior_sigma_theta, "[deg] same for rotation");
   MRPT_SAVE_CONFIG_VAR_COMMENT(constant_velocity, "predict the previous motion over the new scan interval (false: per scan)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_interval_ratio, "...scaled by at most this (or 1 / this) times");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_factor, "a match direction with less information than this many times what noise fakes is weak (0: never)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
 }
 
 }  // namespace swslam::tracking

@@ -21,6 +21,12 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
   bool constant_velocity = true;   ///< predict the previous motion over the new scan interval (false: per scan)
   double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
+  /** A match direction is weak (ambiguous) when its information is below this many times what
+   * noise fakes along a featureless one (0: never; tracking/ambiguity.h) */
+  double ambiguity_factor = 1.0;
+  /** Along a weak direction the prediction decides, with the variance of its recent errors
+   * (false: weak directions are only reported; doc/tracking.md says why that is the default) */
+  bool ambiguity_take_prior = false;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
