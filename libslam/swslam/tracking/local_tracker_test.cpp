@@ -426,6 +426,12 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   EXPECT_LT(r.worst_x_drift, 0.1);
   EXPECT_LT(r.worst_y_error, 0.05);
   EXPECT_GE(r.min_edge_x_variance, 0.02);
+  // Reported only (the default): ambiguous in the stats, and the searches slide the scans
+  // along the wall by metres (doc/tracking.md).
+  tp.ambiguity_take_prior = false;
+  const WeakRun reported = driveAlongX(wall, tp, -1);
+  EXPECT_GE(reported.ambiguous_scans, 35);
+  EXPECT_GT(reported.worst_x_drift, 1.0) << "if this holds now, the default may take the prior";
 }
 
 TEST(LocalTracker, ARoomIsNotAmbiguous)
