@@ -13,7 +13,8 @@ Usage: python3 scripts/plot-stats.py RUN_DIR/stats.csv OUT_DIR [--x time|scan]
 
 stats.csv has a header line and one comma-separated row per input scan:
   scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,
-  match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization,switched_off
+  match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization,switched_off,
+  ambiguous
 (doc/system.md describes each column).
 A missing or malformed value is an error naming its line and column. Each figure is written
 under a temporary name in OUT_DIR (created if missing) and renamed. Needs matplotlib
@@ -29,7 +30,7 @@ import tempfile
 
 COLUMNS = ["scan", "timestamp", "source", "valid_rays", "correspondences", "match_sq_residuals",
            "active_sq_residuals", "match_ms", "tracking_ms", "graph_ms", "map_ms", "keyframe",
-           "new_node", "loops", "full_optimization", "switched_off"]
+           "new_node", "loops", "full_optimization", "switched_off", "ambiguous"]
 SOURCES = ("first", "match", "searched", "odometry", "constant_motion")
 INT_RE = re.compile(r"[0-9]+")
 FLOAT_RE = re.compile(r"[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?")
@@ -77,7 +78,7 @@ PARSERS = {"scan": count, "timestamp": number, "source": source, "valid_rays": c
            "active_sq_residuals": duration, "match_ms": duration,
            "tracking_ms": duration, "graph_ms": duration, "map_ms": duration,
            "keyframe": count, "new_node": flag, "loops": count, "full_optimization": flag,
-           "switched_off": count}
+           "switched_off": count, "ambiguous": count}
 
 
 def read_stats(path):

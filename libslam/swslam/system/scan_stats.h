@@ -26,6 +26,7 @@ struct ScanStats
   size_t loops = 0;  ///< loop edges accepted for this scan's node
   bool full_optimization = false;
   size_t switched_off = 0;  ///< robustified edges the latest optimization for this scan switched off
+  int ambiguous = 0;  ///< weak directions of the scan's match, taken from the prediction (0: none)
 };
 
 /** stats.csv text: a header line, then one line per scan. */
@@ -46,6 +47,7 @@ struct RunSummary
   size_t scans = 0, skipped_scans = 0, nodes = 0, constraints = 0, loops = 0;
   size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t fallback_scans = 0;  ///< scans whose pose came from odometry or constant motion
+  size_t ambiguous_scans = 0;  ///< scans whose match had a weak direction (ScanStats::ambiguous)
   double distance = 0;        ///< [m] along the keyframes, then to the last scan
   double duration = 0;        ///< [s] of sensor time
   double wall_time = 0;       ///< [s] processing time

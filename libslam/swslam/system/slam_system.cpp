@@ -161,6 +161,7 @@ void SlamSystem::trackOne(const sensor::ScanInput& input, size_t index)
   row.tracking_ms = 1e3 * seconds;
   row.keyframe = step.keyframe;
   row.new_node = step.new_keyframe;
+  row.ambiguous = step.ambiguous;
   {
     std::lock_guard<std::mutex> lock(results_mutex_);
     stats_.push_back(row);

@@ -1,7 +1,9 @@
 #include <swslam/tracking/local_tracker.h>
 #include <swslam/geometry/information.h>
 
+#include <swslam/correlative/peaks.h>
 #include <swslam/correlative/searched_match.h>
+#include <swslam/tracking/ambiguity.h>
 #include <swslam/geometry/sensor_frame.h>
 #include <swslam/tracking/motion_prediction.h>
 
@@ -86,6 +88,12 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
                                          steady_.costPerM2(correlative_));
   step.searched = true;
   if (s.replaced) step.source = TrackingSource::Searched;
+  if (s.match.ok())
+    if (const auto d = secondPeakOffset(scan, guess, s.match))
+    {
+      step.two_peaks = true;
+      step.peak_offset = *d;
+    }
   return s.match;
 }
 
@@ -132,6 +140,20 @@ graph::Constraint LocalTracker::consecutiveEdge(const Keyframe& previous, const 
   e.information = geometry::informationFromCovariance(
       geometry::vehicleMotionCovariance(previous.sensor_pose, m.pose, m.covariance));
   return e;
+std::optional<Eigen::Vector3d> LocalTracker::secondPeakOffset(const sensor::Scan& scan, const CPose2D& guess,
+                                                              const plicp::MatchResult& m) const
+{
+  correlative::SearchWindow w = correlative::searchWindow(correlative_, guess);
+  w.cost_per_m2 = steady_.costPerM2(correlative_);
+  const Eigen::Vector3d chosen(m.pose.x(), m.pose.y(), m.pose.phi());
+  const auto peak = correlative::secondPeak(
+      *search_pyramid_, correlative::thinPoints(scan.points, correlative_.resolution, correlative_.max_range), w,
+      chosen, correlative::peakRadius(correlative_.sigma, correlative_.resolution), correlative_.min_score,
+      correlative_.min_score_gain);
+  if (!peak || !peak->similar) return std::nullopt;
+  Eigen::Vector3d d = peak->peak.pose - chosen;
+  d.z() = std::remainder(d.z(), 2 * M_PI);
+  return d;
 }
 
 Keyframe& LocalTracker::addKeyframe(const sensor::Scan& scan, const CPose2D& pose)
@@ -152,13 +174,32 @@ bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
          std::abs(rel.phi()) > tracking_.keyframe_rotation;
 }
 
+int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const CPose2D& prior, double prior_var_xy,
+                                     double length) const
+{
+  if (!m.ok() || tracking_.ambiguity_factor <= 0) return 0;
+  const double noise = residualNoiseVariance(m.sum_sq_residuals, m.correspondences, plicp_.range_sigma * plicp_.range_sigma);
+  const double threshold = weakRatioThreshold(noise, plicp_.min_segment_length, tracking_.ambiguity_factor);
+  const Ambiguity a = findWeakDirections(m.covariance, length, threshold);
+  if (!tracking_.ambiguity_take_prior) return a.weak;
+  const double sth = tracking_.lost_prior_sigma_theta;
+  Eigen::Vector3d x(m.pose.x(), m.pose.y(), m.pose.phi());
+  takePriorAlongWeak(x, m.covariance, Eigen::Vector3d(prior.x(), prior.y(), prior.phi()),
+                     Eigen::Vector3d(prior_var_xy, prior_var_xy, sth * sth).asDiagonal(), a, length);
+  m.pose = CPose2D(x.x(), x.y(), x.z());
+  return a.weak;
+}
+
 std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, const Keyframe& to,
                                                    const sensor::Scan& scan, graph::EdgeKind kind) const
 {
   // Guess from the current estimates; PLICP works in the sensor frame.
   const CPose2D guess = geometry::sensorMotion(from.sensor_pose, to.pose - from.pose);
-  const plicp::MatchResult m = plicp::matchScans(*from.scan, scan, guess, plicp_);
+  plicp::MatchResult m = plicp::matchScans(*from.scan, scan, guess, plicp_);
   if (!m.ok()) return std::nullopt;
+  // Along a direction the pair does not constrain, the chain decides, with the variance of a
+  // node made without a match: never a confident pull along a corridor.
+  takePriorWhereWeak(m, guess, tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy, rotationLength(scan.points));
   // The chain between recent nodes is accurate to centimetres: a match far from it found
   // another local minimum (low overlap, repeated structure), not a correction.
   if ((m.pose.translation() - guess.translation()).norm() > tracking_.dense_gate_xy ||
@@ -218,12 +259,26 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   step.match = matchLast(scan, geometry::sensorMotion(last.sensor_pose, predicted), step);
   step.match_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CPose2D rel = predicted;
+  // Where the match is ambiguous, the prediction decides, with the variance its recent errors
+  // show (and the keyframe edge knows it). The errors are measured by the match before the
+  // prediction replaced its weak directions, which would confirm it there by construction.
+  const plicp::MatchResult raw = step.match;
+  const double lost_var = tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy;
+  step.ambiguous = takePriorWhereWeak(step.match, geometry::sensorMotion(last.sensor_pose, predicted),
+                                      steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
+                                      rotationLength(scan.points)) +
+                   (step.two_peaks ? 1 : 0);
+  // A match that is one of two poses the scan cannot tell apart: its variance along their
+  // separation is the separation's square (after the weak directions: the prediction never
+  // averages two peaks).
+  if (step.two_peaks) step.match.covariance += step.peak_offset * step.peak_offset.transpose();
   if (step.match.ok())
     rel = geometry::vehicleMotion(last.sensor_pose, step.match.pose);
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   last_motion_ = rel - relative_;
-  steady_.add(last_motion_, motion);  // the error of the prediction this scan used
+  // The error of the prediction this scan used.
+  steady_.add(raw.ok() ? geometry::vehicleMotion(last.sensor_pose, raw.pose) - relative_ : last_motion_, motion);
   relative_ = rel;
   step.keyframe = last.id;
   step.relative = rel;

@@ -57,6 +57,11 @@ struct TrackingStep
   bool searched = false;           ///< the correlative search ran (source says if it won)
   double match_time = 0;           ///< [s] spent matching against the keyframe (search included)
   size_t valid_rays = 0;           ///< valid rays of this scan
+  bool two_peaks = false;  ///< the search found a second pose, far from the kept one, of similar score...
+  Eigen::Vector3d peak_offset = Eigen::Vector3d::Zero();  ///< ...this far from it (sensor frame [x, y, theta])
+  /** Directions the scan could not decide: the kept match's weak ones (where it took the
+   * prediction), plus one for a second peak of the search (0: none) */
+  int ambiguous = 0;
 };
 
 class LocalTracker
@@ -83,6 +88,15 @@ class LocalTracker
                                        graph::EdgeKind kind) const;
   graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
+  /** The weak directions of a converged match (tracking/ambiguity.h): returns how many, and
+   * with ambiguity_take_prior takes `prior` (sensor frame; translation variance prior_var_xy,
+   * rotation variance lost_prior_sigma_theta^2) along them. */
+  int takePriorWhereWeak(plicp::MatchResult& m, const mrpt::poses::CPose2D& prior, double prior_var_xy,
+                         double length) const;
+  /** After a search: the offset from the match of a second peak of the search's objective of
+   * similar height, away from the match's own (correlative/peaks.h), if there is one. */
+  std::optional<Eigen::Vector3d> secondPeakOffset(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess,
+                                                  const plicp::MatchResult& m) const;
   /** The match of `scan` from `guess` (the last keyframe's sensor frame) against the reference
    * (matchReference()), re-aligned by the correlative search when its prediction failed. */
   plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, TrackingStep& step);

@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/bits_math.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace swslam::tracking
@@ -26,6 +27,8 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   MRPT_LOAD_CONFIG_VAR_CS(max_interval_ratio, double);
   MRPT_LOAD_CONFIG_VAR_CS(local_map_keyframes, int);
   MRPT_LOAD_CONFIG_VAR_CS(local_map_radius, double);
+  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_factor, double);
+  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_take_prior, bool);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -40,6 +43,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(max_interval_ratio >= 1, "max_interval_ratio must be >= 1");
   require(local_map_keyframes >= 0, "local_map_keyframes must be >= 0");
   require(local_map_radius > 0, "local_map_radius must be > 0");
+  require(ambiguity_factor >= 0 && std::isfinite(ambiguity_factor), "ambiguity_factor must be >= 0");
 }
 
 void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -58,6 +62,8 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_interval_ratio, "...scaled by at most this (or 1 / this) times");
   MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_keyframes, "scans match a virtual scan of the last this many keyframes (0: the last keyframe's scan)...");
   MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_radius, "[m] ...those whose sensor is this close to the predicted one");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_factor, "a match direction with less information than this many times what noise fakes is weak (0: never)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
 }
 
 }  // namespace swslam::tracking

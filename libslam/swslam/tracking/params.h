@@ -23,6 +23,12 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
   int local_map_keyframes = 0;      ///< scans match a virtual scan of the last this many keyframes (0: the last keyframe's scan)...
   double local_map_radius = 10.0;   ///< [m] ...those whose sensor is this close to the predicted one
+  /** A match direction is weak (ambiguous) when its information is below this many times what
+   * noise fakes along a featureless one (0: never; tracking/ambiguity.h) */
+  double ambiguity_factor = 1.0;
+  /** Along a weak direction the prediction decides, with the variance of its recent errors
+   * (false: weak directions are only reported; doc/tracking.md says why that is the default) */
+  bool ambiguity_take_prior = false;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

@@ -31,4 +31,12 @@ double SteadyMotion::costPerM2(const correlative::CorrelativeParams& p) const
   return p.steady_prior_cost / var;
 }
 
+double SteadyMotion::predictionVariance(double min_variance, double unknown) const
+{
+  if (squared_errors_.size() < kMinChanges) return unknown;
+  double sum_sq = 0;
+  for (double e2 : squared_errors_) sum_sq += e2;
+  return std::max(sum_sq / squared_errors_.size(), min_variance);
+}
+
 }  // namespace swslam::tracking

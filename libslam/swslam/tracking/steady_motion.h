@@ -36,6 +36,11 @@ class SteadyMotion
    * 0 otherwise (starting, stopping, turning on the spot, or steady_prior_cost 0). */
   double costPerM2(const correlative::CorrelativeParams& p) const;
 
+  /** Mean squared translation error of the remembered predictions [m^2], at least
+   * `min_variance`; `unknown` while fewer than kMinChanges are known. The variance of the
+   * next prediction, for the fusion along a match's weak directions (tracking/ambiguity.h). */
+  double predictionVariance(double min_variance, double unknown) const;
+
  private:
   std::deque<mrpt::poses::CPose2D> motions_;
   std::deque<double> squared_errors_;  ///< of the predictions, translation [m^2]
