@@ -7,12 +7,6 @@
 
 namespace swslam::correlative
 {
-Eigen::Vector2i ScoreGrid::cellOf(const Eigen::Vector2d& p) const
-{
-  return {static_cast<int>(std::floor((p.x() - origin.x()) / resolution)),
-          static_cast<int>(std::floor((p.y() - origin.y()) / resolution))};
-}
-
 ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution,
                          double sigma, int pad_cells)
 {

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -27,7 +28,11 @@ struct ScoreGrid
     return cells[static_cast<size_t>(y) * width + x];
   }
   /** The cell holding point p (may be outside the grid). */
-  Eigen::Vector2i cellOf(const Eigen::Vector2d& p) const;
+  Eigen::Vector2i cellOf(const Eigen::Vector2d& p) const
+  {
+    return {static_cast<int>(std::floor((p.x() - origin.x()) / resolution)),
+            static_cast<int>(std::floor((p.y() - origin.y()) / resolution))};
+  }
 };
 
 /** The grid of `points` with cells of `resolution` and kernel `sigma`: cell value

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <tuple>
 
 namespace swslam::correlative
@@ -49,7 +50,20 @@ class Lattice
       : w_(w), res_(base.resolution), n_(halfCells(w, base.resolution)), angles_(windowAngles(w)),
         norm_(255.0 * points.size())
   {
-    for (double a : angles_) cells_.push_back(rotatedCells(base, points, a, w.centre.head<2>()));
+    for (double a : angles_)
+    {
+      cells_.push_back(rotatedCells(base, points, a, w.centre.head<2>()));
+      // Linear indices and bounding box: a block whose cells all fall inside the grid is summed
+      // without bounds checks (the common case: the grid is padded for the window).
+      Box b;
+      for (const auto& c : cells_.back())
+      {
+        b.lo = b.lo.cwiseMin(c);
+        b.hi = b.hi.cwiseMax(c);
+        b.linear.push_back(c.y() * base.width + c.x());
+      }
+      boxes_.push_back(std::move(b));
+    }
   }
   int n() const { return n_; }
   bool excluded(int i, int j) const
@@ -57,7 +71,16 @@ class Lattice
     return correlative::excluded(w_, w_.centre.head<2>() + res_ * Eigen::Vector2d(i, j));
   }
   int angleCount() const { return static_cast<int>(angles_.size()); }
-  int32_t sum(const ScoreGrid& level, int k, int i, int j) const { return sumAt(level, cells_[k], i, j); }
+  int32_t sum(const ScoreGrid& level, int k, int i, int j) const
+  {
+    const Box& b = boxes_[k];
+    if (b.lo.x() + i < 0 || b.lo.y() + j < 0 || b.hi.x() + i >= level.width || b.hi.y() + j >= level.height)
+      return sumAt(level, cells_[k], i, j);
+    const int16_t* cells = level.cells.data() + (j * level.width + i);
+    int32_t sum = 0;
+    for (int idx : b.linear) sum += cells[idx];
+    return sum;
+  }
   /** The objective with cell sum `sum` at the best pose of the block of offsets [i0, i1] x
    * [j0, j1] (its point nearest the centre): an upper bound over the block when `sum` bounds
    * the block's sums, the exact objective of a single pose. */
@@ -84,6 +107,13 @@ class Lattice
   std::vector<double> angles_;
   double norm_;
   std::vector<std::vector<Eigen::Vector2i>> cells_;
+  struct Box
+  {
+    Eigen::Vector2i lo = Eigen::Vector2i::Constant(std::numeric_limits<int>::max());
+    Eigen::Vector2i hi = Eigen::Vector2i::Constant(std::numeric_limits<int>::min());
+    std::vector<int> linear;  ///< y * width + x of each point's cell
+  };
+  std::vector<Box> boxes_;
 };
 
 struct Candidate
@@ -98,8 +128,8 @@ struct Candidate
 class BranchAndBound
 {
  public:
-  BranchAndBound(const ScorePyramid& p, const Lattice& lattice, int32_t needed)
-      : pyramid_(p), lattice_(lattice), needed_(needed)
+  BranchAndBound(const ScorePyramid& p, const Lattice& lattice, int32_t needed, double floor)
+      : pyramid_(p), lattice_(lattice), needed_(needed), floor_(floor)
   {
   }
   Candidate bounded(int k, int i, int j, int h)
@@ -118,6 +148,7 @@ class BranchAndBound
     for (const Candidate& c : cands)
     {
       if (best_ && c.bound <= best_->bound) return;  // sorted: nothing later does better
+      if (c.bound <= floor_) return;  // nor better than the caller's floor
       if (c.sum < needed_) continue;  // no pose of the block reaches min_score
       if (h == 0)
       {
@@ -141,6 +172,7 @@ class BranchAndBound
   const ScorePyramid& pyramid_;
   const Lattice& lattice_;
   int32_t needed_;
+  double floor_;
 };
 }  // namespace
 
@@ -180,13 +212,14 @@ int depthForWindow(double half_xy, double resolution)
 
 std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
                                                  const std::vector<Eigen::Vector2d>& points,
-                                                 const SearchWindow& w, double min_score)
+                                                 const SearchWindow& w, double min_score,
+                                                 double min_objective)
 {
   const ScoreGrid& base = pyramid.levels.front();
   if (points.empty() || base.cells.empty()) return std::nullopt;
   const Lattice lattice(base, points, w);
   const int top = std::min(pyramid.depth(), depthForWindow(w.half_xy, base.resolution));
-  BranchAndBound bnb(pyramid, lattice, threshold(min_score, points.size()));
+  BranchAndBound bnb(pyramid, lattice, threshold(min_score, points.size()), min_objective);
   std::vector<Candidate> cands;
   const int n = lattice.n();
   for (int k = 0; k < lattice.angleCount(); k++)
@@ -200,7 +233,8 @@ std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
 
 std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,
                                              const std::vector<Eigen::Vector2d>& points,
-                                             const SearchWindow& w, double min_score)
+                                             const SearchWindow& w, double min_score,
+                                             double min_objective)
 {
   if (points.empty() || grid.cells.empty()) return std::nullopt;
   const Lattice lattice(grid, points, w);
@@ -215,6 +249,7 @@ std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,
         const int32_t sum = lattice.sum(grid, k, i, j);
         if (sum < needed || lattice.excluded(i, j)) continue;
         const SearchResult r = lattice.result(k, i, j, sum, 0);
+        if (r.objective <= min_objective) continue;
         if (!best || r.objective > best->objective) best = r;
       }
   if (best) best->bounds_evaluated = evaluated;

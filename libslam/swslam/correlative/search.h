@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -52,18 +53,20 @@ struct SearchResult
 std::vector<double> windowAngles(const SearchWindow& w);
 
 /** The pose of the window's lattice with the best objective among those whose score is at
- * least `min_score`, if any.
+ * least `min_score` and whose objective exceeds `min_objective`, if any. A floor prunes early:
+ * a caller that only wants poses better than one it has (tracking's first match) passes its
+ * objective.
  * Level 0 cells are looked up as grid.cellOf(R(theta) p + centre.xy) + (i, j). The pyramid's
  * depth bounds the search's top level (deeper levels are not needed beyond the window). */
-std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
-                                                 const std::vector<Eigen::Vector2d>& points,
-                                                 const SearchWindow& w, double min_score);
+std::optional<SearchResult> searchBranchAndBound(
+    const ScorePyramid& pyramid, const std::vector<Eigen::Vector2d>& points, const SearchWindow& w,
+    double min_score, double min_objective = -std::numeric_limits<double>::infinity());
 
 /** Slow, obviously correct version: scores every pose of the lattice; ties go to the first
  * in the order angle, then i, then j. Same best objective as searchBranchAndBound(). */
-std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,
-                                             const std::vector<Eigen::Vector2d>& points,
-                                             const SearchWindow& w, double min_score);
+std::optional<SearchResult> searchBruteForce(
+    const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points, const SearchWindow& w,
+    double min_score, double min_objective = -std::numeric_limits<double>::infinity());
 
 /** Score of an arbitrary pose: the mean of grid.at(cellOf(R p + t)) / 255 over the points
  * (0 for no points). */

@@ -138,6 +138,20 @@ TEST(CorrelativeSearch, BranchAndBoundEqualsBruteForce)
       EXPECT_LE(std::abs(cells.x()), w.half_xy / res + 1e-9);
       EXPECT_NEAR(scoreAt(pyr.levels[0], cur, fast->pose), fast->score, 0.02);
 
+      // A floor on the objective: just below the best it changes nothing, at the best there is
+      // no result, and in between it agrees with the brute force under the same floor.
+      const auto below = searchBranchAndBound(pyr, cur, w, min_score, slow->objective - 1e-9);
+      ASSERT_TRUE(below.has_value());
+      EXPECT_EQ(below->objective, slow->objective);
+      EXPECT_LE(below->bounds_evaluated, fast->bounds_evaluated);
+      EXPECT_FALSE(searchBranchAndBound(pyr, cur, w, min_score, slow->objective).has_value());
+      EXPECT_FALSE(searchBruteForce(pyr.levels[0], cur, w, min_score, slow->objective).has_value());
+      const double mid = slow->objective - 0.05;
+      const auto fast_mid = searchBranchAndBound(pyr, cur, w, min_score, mid);
+      const auto slow_mid = searchBruteForce(pyr.levels[0], cur, w, min_score, mid);
+      ASSERT_EQ(fast_mid.has_value(), slow_mid.has_value());
+      if (slow_mid) EXPECT_EQ(fast_mid->objective, slow_mid->objective);
+
       // The best pose elsewhere (a disc around the best excluded): same in both, outside the
       // disc, and no better than the best.
       SearchWindow elsewhere = w;

@@ -78,7 +78,8 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
   };
   out.first_objective = objectiveOf(first);
   out.searched_objective = -1e9;
-  const auto best = searchBranchAndBound(pyramid, points, w, p.min_score);
+  // Only a pose better than the first match can replace it: the search prunes the rest.
+  const auto best = searchBranchAndBound(pyramid, points, w, p.min_score, out.first_objective);
   if (!best) return out;
   out.search_objective = best->objective;
   if (first.ok() && (best->pose.head<2>() - vec(first.pose).head<2>()).norm() < 1.5 * p.resolution &&

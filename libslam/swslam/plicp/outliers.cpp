@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace swslam::plicp
 {
@@ -19,6 +20,18 @@ void keepNearestPerReference(std::vector<Correspondence>& cs, int ref_size)
   int w = 0;
   for (int k = 0; k < n; k++)
     if (owner[cs[k].j1] == k) cs[w++] = cs[k];  // w <= k: the owner entries read stay intact
+  cs.resize(w);
+}
+
+void keepNearPerReference(std::vector<Correspondence>& cs, int ref_size, double ratio)
+{
+  thread_local std::vector<double> nearest;  // squared distance of each j1's nearest match
+  nearest.assign(ref_size, std::numeric_limits<double>::infinity());
+  for (const auto& c : cs) nearest[c.j1] = std::min(nearest[c.j1], c.dist2);
+  const double r2 = ratio * ratio;
+  size_t w = 0;
+  for (const auto& c : cs)
+    if (c.dist2 <= r2 * nearest[c.j1]) cs[w++] = c;
   cs.resize(w);
 }
 

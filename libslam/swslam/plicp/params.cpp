@@ -24,6 +24,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   point_spacing = mrpt::DEG2RAD(c.read_double(s, "point_spacing_DEG", mrpt::RAD2DEG(point_spacing)));
   MRPT_LOAD_CONFIG_VAR_CS(min_segment_length, double);
   MRPT_LOAD_CONFIG_VAR_CS(remove_doubles, bool);
+  MRPT_LOAD_CONFIG_VAR_CS(early_doubles_ratio, double);
   MRPT_LOAD_CONFIG_VAR_CS(trim_keep_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(adaptive_quantile, double);
   MRPT_LOAD_CONFIG_VAR_CS(adaptive_mult, double);
@@ -51,6 +52,7 @@ void PlicpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, con
   require(coarse_start_fraction >= 0 && coarse_start_fraction <= 1, "coarse_start_fraction must be in [0, 1]");
   require(point_spacing >= 0 && point_spacing <= 2 * M_PI, "point_spacing_DEG must be in [0, 360]");
   require(min_segment_length >= 0, "min_segment_length must be >= 0");
+  require(early_doubles_ratio == 0 || early_doubles_ratio >= 1, "early_doubles_ratio must be 0 or >= 1");
   require(trim_keep_fraction > 0 && trim_keep_fraction <= 1, "trim_keep_fraction must be in (0, 1]");
   require(adaptive_quantile > 0 && adaptive_quantile <= 1, "adaptive_quantile must be in (0, 1]");
   require(adaptive_mult > 0, "adaptive_mult must be > 0");
@@ -74,6 +76,7 @@ void PlicpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("point_spacing_DEG", point_spacing, "[deg] iterate on every k-th current ray, k = round(this / beam spacing), then one step with all rays (0: all rays)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_segment_length, "[m] shortest reference segment j1-j2 that defines a normal");
   MRPT_SAVE_CONFIG_VAR_COMMENT(remove_doubles, "Keep only the nearest of several points matched to one reference point");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(early_doubles_ratio, "Until the estimate first settles, keep doubles within this many times the nearest's distance (0: one per reference point throughout)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(trim_keep_fraction, "Keep at most this fraction of the best matches");
   MRPT_SAVE_CONFIG_VAR_COMMENT(adaptive_quantile, "Adaptive trimming: this error quantile...");
   MRPT_SAVE_CONFIG_VAR_COMMENT(adaptive_mult, "...times this is the largest error kept");

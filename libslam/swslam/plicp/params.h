@@ -25,6 +25,10 @@ struct PlicpParams : public mrpt::config::CLoadableOptions
   double point_spacing = 0.0;  ///< [rad] iterate on current rays about this far apart, then one full step (ini: point_spacing_DEG; 0: every ray)
   double min_segment_length = 0.2;   ///< [m] shortest j1-j2 segment defining a normal
   bool remove_doubles = true;        ///< keep one match per reference point (at the final radius)
+  /** until the estimate first settles, keep a double whose distance to its reference point is
+   * at most this many times the nearest one's (csm's rule), then one per reference point
+   * (0: one per reference point from the first iteration) */
+  double early_doubles_ratio = 0.0;
   double trim_keep_fraction = 0.95;  ///< keep at most this fraction of the best matches
   double adaptive_quantile = 0.7;    ///< adaptive trimming: error quantile ...
   double adaptive_mult = 3.0;        ///< ... times this is the largest error kept

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <random>
 
@@ -155,4 +156,39 @@ TEST(Plicp, RotatedRetriesRecoverALargeTurnFromIdentity)
   EXPECT_FALSE(by_default.ok() && std::abs(by_default.pose.phi() - c.motion.phi()) < 0.01)
       << "the default runs once";
   expectNear(matchScans(ref, cur, {}, retries), c.motion, 0.03, 0.3);
+}
+
+TEST(Plicp, TolerantFirstStageWidensTheBasinFromPoorGuesses)
+{
+  // Motions of up to 0.8 m and 30 deg matched from identity (CARMEN-like consecutive scans
+  // with no odometry). One match per reference point from the first iteration starves the
+  // solve while many current points share a nearest reference point; csm's tolerant rule
+  // until the estimate settles (early_doubles_ratio) recovers more of them.
+  PlicpParams strict, tolerant;
+  strict.early_doubles_ratio = 0;
+  tolerant.early_doubles_ratio = 3;
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int ok_strict = 0, ok_tolerant = 0;
+  const int trials = 40;
+  for (int t = 0; t < trials; t++)
+  {
+    const Case c{test::clutteredWorld(5 + t % 3), {U(rng), -3 + U(rng), U(rng)},
+                 {0.8 * U(rng), 0.3 * U(rng), 30 * M_PI / 180 * U(rng)}, 181, M_PI, 30};
+    const ReferenceScan ref(sensor::scanFromObservation(
+        test::simulateObservation(c.world, c.ref_pose, c.beams, c.fov, c.max_range, 0.03, rng)));
+    const auto cur = sensor::scanFromObservation(test::simulateObservation(
+        c.world, c.ref_pose + c.motion, c.beams, c.fov, c.max_range, 0.03, rng));
+    auto good = [&](const MatchResult& r) {
+      return r.ok() && (r.pose.translation() - c.motion.translation()).norm() < 0.05 &&
+             std::abs(std::remainder(r.pose.phi() - c.motion.phi(), 2 * M_PI)) < 0.02;
+    };
+    ok_strict += good(matchScans(ref, cur, {}, strict));
+    ok_tolerant += good(matchScans(ref, cur, {}, tolerant));
+    // From the true motion both rules end on it.
+    EXPECT_TRUE(good(matchScans(ref, cur, c.motion, tolerant))) << "trial " << t;
+  }
+  std::cout << "from identity within 5 cm / 1.1 deg: one-to-one " << ok_strict << ", tolerant "
+            << ok_tolerant << " of " << trials << "\n";
+  EXPECT_GT(ok_tolerant, ok_strict);
 }

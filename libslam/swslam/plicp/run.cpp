@@ -63,21 +63,27 @@ namespace
 std::vector<Correspondence> rejectOutliers(const ReferenceScan& reference,
                                            const std::vector<Eigen::Vector2d>& cur_in_ref,
                                            std::vector<Correspondence> found, double radius,
-                                           const PlicpParams& params)
+                                           const PlicpParams& params, bool early = false)
 {
   if (params.remove_doubles && radius <= params.max_correspondence_dist)
-    keepNearestPerReference(found, static_cast<int>(reference.scan.size()));
+  {
+    if (early)
+      keepNearPerReference(found, static_cast<int>(reference.scan.size()), params.early_doubles_ratio);
+    else
+      keepNearestPerReference(found, static_cast<int>(reference.scan.size()));
+  }
   thread_local std::vector<double> errors;  // per-thread buffer: no allocation per call
   lineErrorsInto(reference, cur_in_ref, found, errors);
   trimByError(found, errors, params.trim_keep_fraction, params.adaptive_quantile, params.adaptive_mult);
   return found;
 }
 
-/** Convergence test of a step: the epsilons at the final radius; at a coarse radius only
- * settling is needed (2% of the radius, 0.3 deg), the fine stages refine it. */
-bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& params)
+/** Convergence test of a step: the epsilons at the final radius; at a coarse radius or in the
+ * tolerant stage only settling is needed (2% of the radius, 0.3 deg), the fine stages refine it. */
+bool isSmallStep(const Eigen::Vector3d& step, double radius, const PlicpParams& params, bool early)
 {
-  const bool coarse = radius > params.max_correspondence_dist;
+  const bool coarse = radius > params.max_correspondence_dist || early;
+  // (the settling test of a coarse radius applies at the final radius too: 2% of it)
   const double eps_xy = coarse ? 0.02 * radius : params.epsilon_xy;
   const double eps_th = coarse ? 0.005 : params.epsilon_theta;
   return step.head<2>().norm() < eps_xy && std::abs(step.z()) < eps_th;
@@ -97,9 +103,20 @@ void iterate(const ReferenceScan& reference, const sensor::Scan& cur, double rad
   std::vector<Correspondence> previous, before_previous;
   std::vector<Eigen::Vector2d> cur_in_ref;  // buffers reused over the iterations
   std::vector<PointToLine> terms;
+  // A poor guess gets a tolerant first stage (early_doubles_ratio): the first iteration, with
+  // one match per reference point, finds too few matches or takes a step that the coarse test
+  // does not call small. The stage lasts until the estimate first settles; a good guess never
+  // enters it (its results are those of the one-to-one rule). A settled stage or radius starts
+  // the next one with no set history.
+  bool probing = params.early_doubles_ratio > 0 && radius <= params.max_correspondence_dist;
+  bool early = false;
+  std::vector<Correspondence> probe_set;
   auto settled = [&]() {
-    if (radius <= params.max_correspondence_dist) return true;
-    radius = std::max(params.max_correspondence_dist, 0.5 * radius);
+    if (radius <= params.max_correspondence_dist && !early) return true;
+    if (radius <= params.max_correspondence_dist)
+      early = false;
+    else
+      radius = std::max(params.max_correspondence_dist, 0.5 * radius);
     previous.clear();
     before_previous.clear();
     return false;
@@ -111,7 +128,14 @@ void iterate(const ReferenceScan& reference, const sensor::Scan& cur, double rad
     auto found = run.iterations == 1 && !first.empty()
                      ? std::move(first)
                      : findCorrespondences(ref, reference.index, cur_in_ref, radius, memory);
-    run.kept = rejectOutliers(reference, cur_in_ref, std::move(found), radius, params);
+    if (probing) probe_set = found;
+    run.kept = rejectOutliers(reference, cur_in_ref, std::move(found), radius, params, early);
+    if (run.kept.size() < min_n && probing)
+    {
+      probing = false;
+      early = true;
+      run.kept = rejectOutliers(reference, cur_in_ref, std::move(probe_set), radius, params, early);
+    }
     if (run.kept.size() < min_n)
     {
       run.status = MatchStatus::TooFewCorrespondences;
@@ -138,9 +162,14 @@ void iterate(const ReferenceScan& reference, const sensor::Scan& cur, double rad
     const Eigen::Vector3d step(next->x() - run.x.x(), next->y() - run.x.y(),
                                std::remainder(next->z() - run.x.z(), 2 * M_PI));
     run.x = *next;
+    if (probing)
+    {
+      probing = false;
+      early = !isSmallStep(step, radius, params, /*coarse=*/true);
+    }
     std::swap(before_previous, previous);
     previous = run.kept;  // reuses before_previous's old storage
-    if (isSmallStep(step, radius, params) && settled())
+    if (isSmallStep(step, radius, params, early) && settled())
     {
       run.status = MatchStatus::Converged;
       return;
