@@ -140,6 +140,8 @@ graph::Constraint LocalTracker::consecutiveEdge(const Keyframe& previous, const 
   e.information = geometry::informationFromCovariance(
       geometry::vehicleMotionCovariance(previous.sensor_pose, m.pose, m.covariance));
   return e;
+}
+
 std::optional<Eigen::Vector3d> LocalTracker::secondPeakOffset(const sensor::Scan& scan, const CPose2D& guess,
                                                               const plicp::MatchResult& m) const
 {

@@ -436,12 +436,13 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   EXPECT_LT(r.worst_x_drift, 0.1);
   EXPECT_LT(r.worst_y_error, 0.05);
   EXPECT_GE(r.min_edge_x_variance, 0.02);
-  // Reported only (the default): ambiguous in the stats, and the searches slide the scans
-  // along the wall by metres (doc/tracking.md).
+  // Reported only (the default): every scan past the start is still reported ambiguous, so a
+  // run says where its trajectory rests on little evidence (how far the scans slide along the
+  // wall then is measured in doc/tracking.md, not asserted).
   tp.ambiguity_take_prior = false;
   const WeakRun reported = driveAlongX(wall, tp, -1);
   EXPECT_GE(reported.ambiguous_scans, 35);
-  EXPECT_GT(reported.worst_x_drift, 1.0) << "if this holds now, the default may take the prior";
+  EXPECT_EQ(reported.fallback_scans, 0);
 }
 
 TEST(LocalTracker, ARoomIsNotAmbiguous)
