@@ -78,8 +78,9 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
   };
   out.first_objective = objectiveOf(first);
   out.searched_objective = -1e9;
-  // Only a pose better than the first match can replace it: the search prunes the rest.
-  const auto best = searchBranchAndBound(pyramid, points, w, p.min_score, out.first_objective);
+  // No floor at the first match's objective: PLICP from a lattice pose that scores below the
+  // first match may still end above it (doc/plicp.md says what the floor did to the corridor).
+  const auto best = searchBranchAndBound(pyramid, points, w, p.min_score);
   if (!best) return out;
   out.search_objective = best->objective;
   if (first.ok() && (best->pose.head<2>() - vec(first.pose).head<2>()).norm() < 1.5 * p.resolution &&

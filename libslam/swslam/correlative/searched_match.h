@@ -55,8 +55,7 @@ struct SearchedMatch
 };
 
 /** Searches the window around `guess` (the current sensor pose in the reference sensor
- * frame, as for matchScans) with the reference's pyramid for the best pose whose objective
- * beats that of `first` (the floor prunes the search), runs PLICP from it, and
+ * frame, as for matchScans) with the reference's pyramid, runs PLICP from the best pose, and
  * keeps that match only if its objective (score on the grid less the motion prior's cost) is
  * min_score_gain above that of `first` (a failed match has none). If the match from the best
  * pose ends at a lower objective than the best pose's own (PLICP against the keyframe alone
