@@ -24,11 +24,14 @@ struct SecondPeak
 double peakRadius(double sigma, double resolution);
 
 /** Searches `w` again with the disc of `radius` around `chosen` (a pose [x, y, theta] of the
- * grid's frame) excluded, and compares that best pose's objective with the chosen pose's
- * (objective(w, scoreAt(...), chosen)): `similar` when it is at least the chosen's less
- * `margin`. Nothing when no pose outside the disc scores min_score. */
+ * grid's frame) excluded, and compares that best pose's objective with the chosen pose's:
+ * `chosen_objective` when the caller has it (a search's own best), else
+ * objective(w, scoreAt(...), chosen). `similar` when it is at least the chosen's less
+ * `margin`. Nothing when no pose outside the disc scores min_score. Tracking and loop
+ * verification both tell an ambiguous match by it. */
 std::optional<SecondPeak> secondPeak(const ScorePyramid& pyramid, const std::vector<Eigen::Vector2d>& points,
                                      SearchWindow w, const Eigen::Vector3d& chosen, double radius,
-                                     double min_score, double margin);
+                                     double min_score, double margin,
+                                     std::optional<double> chosen_objective = std::nullopt);
 
 }  // namespace swslam::correlative

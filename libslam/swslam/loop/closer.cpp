@@ -1,6 +1,8 @@
 #include <swslam/loop/closer.h>
+
 #include <swslam/geometry/information.h>
 
+#include <swslam/correlative/peaks.h>
 #include <swslam/correlative/search.h>
 #include <swslam/correlative/searched_match.h>
 #include <swslam/geometry/sensor_frame.h>
@@ -108,10 +110,9 @@ plicp::MatchResult searchedLoopMatch(const plicp::ReferenceScan& old_scan, const
   if (!best) return first;
   if (p.ambiguity_radius > 0)
   {
-    w.exclude_xy = best->pose.head<2>();
-    w.exclude_radius = p.ambiguity_radius;
-    const auto runner_up = correlative::searchBranchAndBound(pyramid, points, w, s.min_score);
-    if (runner_up && runner_up->objective > best->objective - p.ambiguity_margin) return first;
+    const auto runner_up = correlative::secondPeak(pyramid, points, w, best->pose, p.ambiguity_radius, s.min_score,
+                                                   p.ambiguity_margin, best->objective);
+    if (runner_up && runner_up->similar) return first;
   }
   return plicp::matchScans(old_scan, cur, CPose2D(best->pose.x(), best->pose.y(), best->pose.z()), plicp);
 }
