@@ -17,7 +17,22 @@ NormalEquations& CoupledSystem::prepare(int free_blocks, const std::vector<std::
   return *ne_;
 }
 
+NormalEquations& CoupledSystem::prepareDecoupled(int free_blocks, const std::vector<std::pair<int, int>>& pairs,
+                                                 const std::vector<char>& weak, size_t min_count)
+{
+  pairs_ = pairs;
+  free_blocks_ = free_blocks;
+  coupled_.assign(pairs_.size(), 1);
+  if (!markDecoupled(weak, min_count)) build();
+  return *ne_;
+}
+
 bool CoupledSystem::decouple(const std::vector<char>& weak, size_t min_count)
+{
+  return markDecoupled(weak, min_count);
+}
+
+bool CoupledSystem::markDecoupled(const std::vector<char>& weak, size_t min_count)
 {
   size_t count = 0;
   auto both_free = [&](size_t n) { return pairs_[n].first >= 0 && pairs_[n].second >= 0; };

@@ -27,6 +27,11 @@ class CoupledSystem
    * outside [-1, free_blocks). */
   NormalEquations& prepare(int free_blocks, const std::vector<std::pair<int, int>>& pairs, bool keep_decoupled);
 
+  /** As prepare() of new pairs, but with the edges flagged in `weak` decoupled at once if
+   * they are at least `min_count` (one symbolic analysis, not two). */
+  NormalEquations& prepareDecoupled(int free_blocks, const std::vector<std::pair<int, int>>& pairs,
+                                    const std::vector<char>& weak, size_t min_count);
+
   /** Decouples the coupled edges flagged in `weak` (one flag per pair of the last prepare)
    * if they are at least `min_count`, and then returns true (the normal equations are new:
    * linearize again). */
@@ -47,6 +52,8 @@ class CoupledSystem
  private:
   /** The normal equations of the coupled edges, rebuilt if their pairs changed. */
   void build();
+  /** decouple(), building only if something was decoupled. */
+  bool markDecoupled(const std::vector<char>& weak, size_t min_count);
 
   int free_blocks_ = -1;
   std::vector<std::pair<int, int>> pairs_, coupled_pairs_;

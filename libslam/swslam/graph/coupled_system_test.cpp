@@ -53,6 +53,21 @@ TEST(CoupledSystem, WeakEdgesAreDecoupledOnlyWhenEnoughOfThem)
   EXPECT_EQ(sys.analyses(), 4u);
 }
 
+TEST(CoupledSystem, PreparedDecoupledInOneAnalysis)
+{
+  CoupledSystem sys;
+  const auto pairs = chainWithLongEdge();
+  const std::vector<char> weak = {0, 0, 0, 1, 0};
+  sys.prepareDecoupled(4, pairs, weak, 2);  // too few: all coupled
+  EXPECT_TRUE(sys.coupled(3));
+  EXPECT_EQ(sys.analyses(), 1u);
+  sys.prepareDecoupled(4, pairs, weak, 1);
+  EXPECT_FALSE(sys.coupled(3));
+  EXPECT_TRUE(sys.coupled(0));
+  EXPECT_EQ(sys.decoupled(), 1u);
+  EXPECT_EQ(sys.analyses(), 2u);
+}
+
 TEST(CoupledSystem, APatternWithAFewPairsMoreIsReused)
 {
   // A chain of 300 blocks and one long edge: least squares without the long edge reuses the

@@ -125,3 +125,23 @@ TEST(Gnc, FalseLoopsAreSwitchedOffRandomOrGrouped)
     }
   }
 }
+
+TEST(Gnc, ManyFalseLoopsAreSolvedWithASparseFactor)
+{
+  // Enough long false loops that the factor with every edge coupled is dense: the convex
+  // stage leaves the weak ones out of the factor and brings them back by conjugate gradients
+  // (exactly: the same result as the clean optimum, every false loop switched off).
+  const SyntheticGraph s = cleanGraph();
+  const PoseGraph clean = cleanOptimum(s);
+  PoseGraph g = s.graph;
+  FalseLoopOptions fo;
+  fo.count = 400;
+  fo.seed = 8;
+  const std::vector<size_t> added = addFalseLoops(g, fo);
+  const OptimizationReport r = optimizeFull(g, gnc());
+  ASSERT_NE(r.status, OptimizationStatus::Diverged) << r.message;
+  EXPECT_GT(r.cg_iterations, 0u);
+  EXPECT_LT(distance(g, clean), 0.05);
+  const std::set<size_t> off(r.switched_off.begin(), r.switched_off.end()), truth(added.begin(), added.end());
+  EXPECT_EQ(off, truth);
+}

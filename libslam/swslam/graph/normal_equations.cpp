@@ -53,8 +53,8 @@ NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<in
     }
   damped_ = H_;
   simplicial_.analyzePattern(damped_);
-  const double fill = simplicial_.factorNonZeros() / std::max<Eigen::Index>(1, g_.size());
-  if (g_.size() >= kCholmodMinDimension && fill > kCholmodMinFillPerColumn)
+  fill_per_column_ = simplicial_.factorNonZeros() / std::max<Eigen::Index>(1, g_.size());
+  if (g_.size() >= kCholmodMinDimension && fill_per_column_ > kCholmodMinFillPerColumn)
   {
     // A dense factor (an area revisited over and over): CHOLMOD's supernodal Cholesky.
     use_cholmod_ = true;
@@ -85,6 +85,34 @@ void NormalEquations::setZero()
 {
   std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.0);
   g_.setZero();
+  off_pattern_.clear();
+}
+
+void NormalEquations::addOffPattern(int a, int b, const Eigen::Matrix3d& block)
+{
+  off_pattern_.push_back({position_.at(static_cast<size_t>(a)), position_.at(static_cast<size_t>(b)), block});
+}
+
+Eigen::VectorXd NormalEquations::dampedProduct(const Eigen::VectorXd& x) const
+{
+  Eigen::VectorXd y = damped_.selfadjointView<Eigen::Upper>() * x;
+  for (const auto& o : off_pattern_)
+  {
+    y.segment<3>(3 * o.row) += o.block * x.segment<3>(3 * o.col);
+    y.segment<3>(3 * o.col) += o.block.transpose() * x.segment<3>(3 * o.row);
+  }
+  return y;
+}
+
+bool NormalEquations::factorSolve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
+{
+  if (use_cholmod_)
+  {
+    x = cholmod_.solve(b);
+    return cholmod_.info() == Eigen::Success;
+  }
+  x = simplicial_.solve(b);
+  return simplicial_.info() == Eigen::Success;
 }
 
 void NormalEquations::addStoredBlock(int row_block, int col_block, const Eigen::Matrix3d& block)
@@ -126,22 +154,42 @@ bool NormalEquations::solveDamped(double lambda, Eigen::VectorXd& dx)
   const int blocks = static_cast<int>(position_.size());
   for (int a = 0; a < blocks; ++a) rhs_.segment<3>(3 * position_[a]) = -g_.segment<3>(3 * a);
   Eigen::VectorXd stored;
-  bool ok = false;
   if (use_cholmod_)
   {
     cholmod_.factorize(damped_);
-    ok = cholmod_.info() == Eigen::Success;
-    if (ok) stored = cholmod_.solve(rhs_);
-    ok = ok && cholmod_.info() == Eigen::Success;
+    if (cholmod_.info() != Eigen::Success) return false;
   }
   else
   {
     simplicial_.factorize(damped_);
-    ok = simplicial_.info() == Eigen::Success;
-    if (ok) stored = simplicial_.solve(rhs_);
-    ok = ok && simplicial_.info() == Eigen::Success;
+    if (simplicial_.info() != Eigen::Success) return false;
   }
-  if (!ok) return false;
+  if (!factorSolve(rhs_, stored)) return false;
+  refine_iterations_ = 0;
+  if (!off_pattern_.empty())
+  {
+    // Preconditioned conjugate gradients from the pattern's solution; the damped system is
+    // positive definite (each edge's term is, and so is the damping).
+    Eigen::VectorXd r = rhs_ - dampedProduct(stored), z, p, q;
+    const double target = kRefineTolerance * rhs_.norm();
+    if (!factorSolve(r, z)) return false;
+    p = z;
+    double rz = r.dot(z);
+    while (r.norm() > target && refine_iterations_ < kMaxRefineIterations && rz > 0)
+    {
+      ++refine_iterations_;
+      q = dampedProduct(p);
+      const double pq = p.dot(q);
+      if (!(pq > 0)) break;
+      const double step = rz / pq;
+      stored += step * p;
+      r -= step * q;
+      if (!factorSolve(r, z)) return false;
+      const double rz_next = r.dot(z);
+      p = z + (rz_next / rz) * p;
+      rz = rz_next;
+    }
+  }
   dx.resize(g_.size());
   for (int a = 0; a < blocks; ++a) dx.segment<3>(3 * a) = stored.segment<3>(3 * position_[a]);
   return dx.allFinite();

@@ -33,17 +33,30 @@ class NormalEquations
   void addDiagonal(int a, const Eigen::Matrix3d& block);
   /** H_ab += block (and H_ba += block^T implicitly: one triangle is stored). */
   void addOffDiagonal(int a, int b, const Eigen::Matrix3d& block);
+  /** H_ab += block for a pair (a != b) outside the pattern: kept aside, so that the solve
+   * is still exact, by conjugate gradients preconditioned with the factor of the pattern's
+   * part (coupled_system.h). */
+  void addOffPattern(int a, int b, const Eigen::Matrix3d& block);
   /** g, in the variables' own order (as dx). */
   Eigen::VectorXd& gradient() { return g_; }
 
-  /** Solves (H + lambda diag(H)) dx = -g. Returns false if the factorization fails. */
+  /** Solves (H + lambda diag(H)) dx = -g. Returns false if the factorization fails. With
+   * blocks off the pattern, the solve of the pattern's part is refined by preconditioned
+   * conjugate gradients to a relative residual of kRefineTolerance (at most
+   * kMaxRefineIterations). */
   bool solveDamped(double lambda, Eigen::VectorXd& dx);
+  /** Conjugate-gradient iterations of the last solveDamped (0 without off-pattern blocks). */
+  int refineIterations() const { return refine_iterations_; }
+  static constexpr double kRefineTolerance = 1e-8;
+  static constexpr int kMaxRefineIterations = 200;
   /** dx^T (lambda diag(H) dx - g) / 2: the decrease the damped model predicts. */
   double predictedDecrease(double lambda, const Eigen::VectorXd& dx) const;
 
   int dimension() const { return static_cast<int>(g_.size()); }
   /** True if the supernodal CHOLMOD factorization is used. */
   bool usesCholmod() const { return use_cholmod_; }
+  /** Non-zeros per column of the factor in the blocks' AMD order (the symbolic analysis). */
+  double fillPerColumn() const { return fill_per_column_; }
 
   /** CHOLMOD is used for systems of at least this many unknowns whose factor holds more
    * than kCholmodMinFillPerColumn non-zeros per column (decided by the symbolic analysis). */
@@ -68,6 +81,20 @@ class NormalEquations
   {
     double factorNonZeros() const { return m_nonZerosPerCol.cast<double>().sum(); }
   };
+
+  /** (H + lambda diag(H)) x in stored order, off-pattern blocks included. */
+  Eigen::VectorXd dampedProduct(const Eigen::VectorXd& x) const;
+  /** The factor's solve, in stored order. */
+  bool factorSolve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+
+  struct OffPatternBlock
+  {
+    int row, col;  // stored block indices
+    Eigen::Matrix3d block;
+  };
+  std::vector<OffPatternBlock> off_pattern_;
+  int refine_iterations_ = 0;
+  double fill_per_column_ = 0;
 
   bool use_cholmod_ = false;
   SimplicialSolver simplicial_;

@@ -10,9 +10,10 @@
 namespace
 {
 /** Fills the system with random blocks at `pairs` (the pattern given by `pattern_pairs`,
- * by default the same) and solves it. */
+ * by default the same), and at `off_pattern` outside the pattern, and solves it. */
 void checkAgainstDense(int blocks, const std::vector<std::pair<int, int>>& pairs, bool cholmod,
-                       const std::vector<std::pair<int, int>>* pattern_pairs = nullptr)
+                       const std::vector<std::pair<int, int>>* pattern_pairs = nullptr,
+                       const std::vector<std::pair<int, int>>& off_pattern = {})
 {
   std::mt19937 rng(9);
   std::normal_distribution<double> n01;
@@ -37,11 +38,27 @@ void checkAgainstDense(int blocks, const std::vector<std::pair<int, int>>& pairs
     dense.block<3, 3>(3 * a, 3 * b) += m;
     dense.block<3, 3>(3 * b, 3 * a) += m.transpose();
   }
+  for (const auto& [a, b] : off_pattern)
+  {
+    const Eigen::Matrix3d m = 0.3 * randomBlock();
+    ne.addOffPattern(a, b, m);
+    dense.block<3, 3>(3 * a, 3 * b) += m;
+    dense.block<3, 3>(3 * b, 3 * a) += m.transpose();
+  }
   for (int i = 0; i < 3 * blocks; ++i) ne.gradient()[i] = n01(rng);
   const double lambda = 0.01;
   Eigen::VectorXd dx;
   ASSERT_TRUE(ne.solveDamped(lambda, dx));
   EXPECT_EQ(ne.usesCholmod(), cholmod);
+  if (off_pattern.empty())
+  {
+    EXPECT_EQ(ne.refineIterations(), 0);
+  }
+  else  // refined, and to the tolerance before the iterations ran out
+  {
+    EXPECT_GT(ne.refineIterations(), 0);
+    EXPECT_LT(ne.refineIterations(), swslam::graph::NormalEquations::kMaxRefineIterations);
+  }
   Eigen::MatrixXd damped = dense;
   damped.diagonal() += lambda * dense.diagonal();
   const Eigen::VectorXd expected = damped.ldlt().solve(-ne.gradient());
@@ -65,6 +82,28 @@ TEST(NormalEquations, DenselyCoupledSystemSwitchesToCholmod)
   for (int a = 0; a < 120; ++a)
     for (int b = 0; b < a; b += 2) pairs.emplace_back(a, b);
   checkAgainstDense(120, pairs, true);
+}
+
+TEST(NormalEquations, BlocksOffThePatternAreSolvedExactlyOnBothFactorizations)
+{
+  // Long edges left out of a chain's pattern (the factor stays tridiagonal) and out of a
+  // dense one: conjugate gradients bring their blocks back into the solve.
+  std::mt19937 rng(4);
+  std::uniform_int_distribution<int> block(0, 199);
+  std::vector<std::pair<int, int>> chain, off;
+  for (int a = 1; a < 200; ++a) chain.emplace_back(a - 1, a);
+  while (off.size() < 40)
+  {
+    const int a = block(rng), b = block(rng);
+    if (std::abs(a - b) > 1) off.emplace_back(a, b);
+  }
+  checkAgainstDense(200, chain, false, nullptr, off);
+  std::vector<std::pair<int, int>> dense;
+  for (int a = 0; a < 120; ++a)
+    for (int b = 0; b < a; b += 2) dense.emplace_back(a, b);
+  std::vector<std::pair<int, int>> odd;  // pairs the dense pattern lacks
+  for (int a = 1; a < 120; a += 2) odd.emplace_back(a, a - 1);
+  checkAgainstDense(120, dense, true, nullptr, odd);
 }
 
 TEST(NormalEquations, SetZeroClearsEverything)

@@ -90,7 +90,7 @@ std::vector<char> weakEdges(const GraphProblem& p, const std::vector<geometry::P
  * (coupled_system.h) adds no block between its two poses. */
 void linearize(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const std::vector<int>& var,
                const KindKernels& k, const std::vector<geometry::SinCos>& rz, const CoupledSystem& sys,
-               NormalEquations& ne)
+               bool exact, NormalEquations& ne)
 {
   ne.setZero();
   Eigen::VectorXd& g = ne.gradient();
@@ -116,7 +116,11 @@ void linearize(const GraphProblem& p, const std::vector<geometry::Pose2>& x, con
       ne.addDiagonal(b, Jj.transpose() * W * Jj);
       g.segment<3>(3 * b) += Jj.transpose() * We;
     }
-    if (a >= 0 && b >= 0 && sys.coupled(n)) ne.addOffDiagonal(a, b, Ji.transpose() * W * Jj);
+    if (a >= 0 && b >= 0)
+    {
+      if (sys.coupled(n)) ne.addOffDiagonal(a, b, Ji.transpose() * W * Jj);
+      else if (exact) ne.addOffPattern(a, b, Ji.transpose() * W * Jj);
+    }
   }
 }
 
@@ -187,6 +191,16 @@ constexpr double kDecoupledWeight = 0.01;
  * fill-in. */
 constexpr double kMinDecoupledShare = 0.01;
 
+/** An exact solve (SystemUse::exact) decouples edges only if every edge coupled fills the
+ * factor in beyond this many non-zeros per column, and then those whose weight is below
+ * kPreconditionerWeight. On the false-loop benchmark's grid walk (doc/graph-optimization.md)
+ * the factor holds about 40 per column with no false loop, 50 with 100 and 130-210 with
+ * 1000; the conjugate gradients took 15-25 iterations per solve at weight 0.01, 70-140 at
+ * 0.1 (a factor of half the flops) and about 150 with no false loop, where a decoupled true
+ * loop still strained from the odometry guess makes them slow. */
+constexpr double kDenseFillPerColumn = 100.0;
+constexpr double kPreconditionerWeight = 0.1;
+
 /** How an optimization keeps its normal equations. */
 struct SystemUse
 {
@@ -194,6 +208,19 @@ struct SystemUse
   /** Decouple the edges whose weight is below kDecoupledWeight, checked at the start and
    * after every accepted step (and keep those the last solve decoupled). */
   bool decouple = false;
+  /** The damping, carried from one solve to the next that goes on from its poses (nullptr:
+   * lm_initial_lambda). In: the damping to start with, if positive, at most
+   * lm_initial_lambda; out: the damping at the end. */
+  double* damping = nullptr;
+  /** Instead of decouple: every edge coupled, unless that factor is dense
+   * (kDenseFillPerColumn); then the edges weak at the start (kPreconditionerWeight) are
+   * decoupled for the whole solve, but their blocks are still in it, off the factor's
+   * pattern (conjugate gradients preconditioned by the factor): the step is the coupled
+   * one, at the cost of a sparse factor. */
+  bool exact = false;
+  /** With decouple: every edge coupled at the start, not those of the solve before (an exact
+   * one's: its edges were weak at its own start, before its steps). */
+  bool fresh = false;
 };
 
 /** Levenberg-Marquardt with IRLS reweighting at every linearization (eq. 11-13). Updates x
@@ -208,24 +235,43 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
   for (const auto& e : p.edges) pairs.emplace_back(var[e.i], var[e.j]);
   CoupledSystem own;
   CoupledSystem& sys = use.shared ? *use.shared : own;
-  sys.prepare(static_cast<int>(rep.free_nodes), pairs, use.decouple);
   const size_t min_decoupled =
       std::max<size_t>(1, static_cast<size_t>(kMinDecoupledShare * static_cast<double>(p.edges.size())));
-  if (use.decouple)
-    sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
+  if (use.exact)
+  {
+    sys.prepare(static_cast<int>(rep.free_nodes), pairs, false);
+    if (sys.equations().fillPerColumn() > kDenseFillPerColumn)
+      sys.prepareDecoupled(static_cast<int>(rep.free_nodes), pairs,
+                           weakEdges(p, x, kernel, rz, kPreconditionerWeight), min_decoupled);
+  }
+  else if (use.decouple && use.fresh)
+    sys.prepareDecoupled(static_cast<int>(rep.free_nodes), pairs, weakEdges(p, x, kernel, rz, kDecoupledWeight),
+                         min_decoupled);
+  else
+  {
+    sys.prepare(static_cast<int>(rep.free_nodes), pairs, use.decouple);
+    if (use.decouple) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
+  }
 
-  double lambda = params.lm_initial_lambda, nu = 2.0;
+  // Carried over from a solve from nearby poses: there the damping had already fallen, and
+  // starting again at lm_initial_lambda damps the graph's slow (long-range) modes, so that
+  // least squares after the stages of gnc took 6 steps of linear convergence where 3 do.
+  double own_damping = params.lm_initial_lambda;
+  double& lambda = use.damping ? *use.damping : own_damping;
+  if (!(lambda > 0.0 && lambda <= params.lm_initial_lambda)) lambda = params.lm_initial_lambda;
+  double nu = 2.0;
   Eigen::VectorXd dx;
   bool relinearize = true;
   while (rep.iterations < params.max_iterations)
   {
     NormalEquations& ne = sys.equations();
-    if (relinearize) linearize(p, x, var, kernel, rz, sys, ne);
+    if (relinearize) linearize(p, x, var, kernel, rz, sys, use.exact, ne);
     relinearize = false;
     if (ne.gradient().lpNorm<Eigen::Infinity>() < params.gradient_tolerance)
       return {OptimizationStatus::Converged, "gradient below tolerance"};
     ++rep.iterations;
     const bool solved = ne.solveDamped(lambda, dx);
+    rep.cg_iterations += static_cast<size_t>(ne.refineIterations());
     std::vector<geometry::Pose2> x_new = x;
     if (solved) applyStep(var, dx, x_new);
     const Evaluation ev_new = solved ? evaluate(p, x_new, kernel, rz) : Evaluation{};
@@ -248,7 +294,7 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
         return {OptimizationStatus::Converged, "relative cost decrease below tolerance"};
       if (dx.norm() <= params.step_tolerance * (std::sqrt(x_norm2) + params.step_tolerance))
         return {OptimizationStatus::Converged, "step below tolerance"};
-      if (use.decouple) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
+      if (use.decouple && !use.exact) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
       continue;
     }
     lambda *= nu;
@@ -436,7 +482,8 @@ constexpr size_t kMaxRefits = 3;
 /** Least squares on the edges not in `off` (increasing indices), from the problem's poses,
  * which take the result unless it diverged. Without the false edges the system is sparse. */
 OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<size_t>& off,
-                                      const GraphOptimizerParams& params, CoupledSystem& sys)
+                                      const GraphOptimizerParams& params, CoupledSystem& sys,
+                                      double* damping)
 {
   GraphProblem kept = problem;
   kept.edges.clear();
@@ -447,7 +494,7 @@ OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<s
     else
       kept.edges.push_back(problem.edges[n]);
   }
-  const OptimizationReport r = optimizeWithKernels(kept, params, uniformKernels({2.0, params.kernel_c}), {&sys});
+  const OptimizationReport r = optimizeWithKernels(kept, params, uniformKernels({2.0, params.kernel_c}), {&sys, false, damping});  // the kept edges: sparse
   if (r.status != OptimizationStatus::Diverged) problem.poses = kept.poses;
   return r;
 }
@@ -457,11 +504,12 @@ OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<s
  * with the result is taken back (at most kMaxRefits rounds). If a kept edge is switched off
  * at a result, the stages may have left the poses in another basin of the inliers' optimum
  * (a long chain bent the other way): that round is also solved from the `given` poses, once,
- * and the lower chi2 wins. Only then, since the second start costs a whole solve. `kept`
- * receives the number of edges kept; the iterations are added to `total`. */
+ * and the lower chi2 wins. Only then, since the second start costs a whole solve. The
+ * rounds go on with the `damping` of the solve before them (the second start from the
+ * initial damping). `kept` receives the number of edges kept; the iterations are added to `total`. */
 OptimizationReport refitKept(GraphProblem& problem, const KindKernels& kernels, const std::vector<geometry::Pose2>& given,
-                             const GraphOptimizerParams& params, CoupledSystem& sys, size_t& kept,
-                             OptimizationReport& total)
+                             const GraphOptimizerParams& params, CoupledSystem& sys, double& damping,
+                             size_t& kept, OptimizationReport& total)
 {
   std::vector<size_t> off = switchedOffEdges(problem, kernels, params.switched_off_weight);
   bool second_start = false;
@@ -469,7 +517,7 @@ OptimizationReport refitKept(GraphProblem& problem, const KindKernels& kernels, 
   for (size_t round = 0; round < kMaxRefits; ++round)
   {
     const std::vector<geometry::Pose2> start = problem.poses;
-    refit = leastSquaresOnKept(problem, off, params, sys);
+    refit = leastSquaresOnKept(problem, off, params, sys, &damping);
     kept = problem.edges.size() - off.size();
     total.iterations += refit.iterations;
     total.accepted_steps += refit.accepted_steps;
@@ -481,7 +529,7 @@ OptimizationReport refitKept(GraphProblem& problem, const KindKernels& kernels, 
       second_start = true;
       GraphProblem other = problem;
       other.poses = given;
-      const OptimizationReport b = leastSquaresOnKept(other, off, params, sys);
+      const OptimizationReport b = leastSquaresOnKept(other, off, params, sys, nullptr);
       total.iterations += b.iterations;
       total.accepted_steps += b.accepted_steps;
       if (b.status != OptimizationStatus::Diverged &&
@@ -533,6 +581,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   // Without a fixed target (adaptive), no stage ends the graduation early.
   const KindKernels target = uniformKernels(params.kernel());
   CoupledSystem sys;  // one pattern for every stage (their edges are the same)
+  double damping = 0;  // carried from stage to stage and into the least squares after them
   OptimizationReport total;
   KindKernels kernels, previous;
   for (size_t k = 0;; ++k)
@@ -545,13 +594,19 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     bool limited = !last;  // gnc: the stages go on down to the target
     kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, 1.0, false, limited)
                        : uniformKernels({floor, params.kernel_c});
-    // The convex first stage couples every edge: from the given poses the true loops are as
-    // far off as the false ones (drift), and decoupling them there spoiled the stage (with
-    // no false loop, 145 edges decoupled after its first step, and 69 true edges ended
-    // switched off by the target kernel instead of none). The adaptive kernel decouples
-    // nothing: with it, 100 random false loops ended 0.027 m off with a true edge switched
-    // off, against 0.0004 m.
-    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, !adaptive && k > 0});
+    // The convex first stage solves exactly, every edge coupled: from the given poses the
+    // true loops are as far off as the false ones (drift), and decoupling them there
+    // spoiled the stage (with no false loop, 145 edges decoupled after its first step, and
+    // 69 true edges ended switched off by the target kernel instead of none). Where that
+    // factor is dense (a thousand long false loops), the weak edges are solved by conjugate
+    // gradients off the factor's pattern instead (SystemUse::exact). The next stage starts
+    // with every edge coupled again, then decouples those weak at its own poses. The
+    // adaptive kernel decouples nothing: with it, 100 random false loops ended 0.027 m off
+    // with a true edge switched off, against 0.0004 m.
+    SystemUse use{&sys, !adaptive && k > 0, &damping};
+    use.exact = !adaptive && k == 0;
+    use.fresh = k == 1;
+    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, use);
     if (k == 0)
     {
       total = s;
@@ -561,6 +616,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     {
       total.iterations += s.iterations;
       total.accepted_steps += s.accepted_steps;
+      total.cg_iterations += s.cg_iterations;
       total.status = s.status;
       total.message = s.message;
     }
@@ -601,7 +657,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     kernels = estimateKernels(problem, params, *shapes, params.adaptive_alpha_min, 2.0, true, limited);
   }
   size_t kept = 0;
-  const OptimizationReport refit = refitKept(problem, kernels, given, params, sys, kept, total);
+  const OptimizationReport refit = refitKept(problem, kernels, given, params, sys, damping, kept, total);
   total.status = refit.status;
   if (refit.status == OptimizationStatus::Diverged)
   {

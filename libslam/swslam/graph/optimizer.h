@@ -57,6 +57,9 @@ struct OptimizationReport
    * pose (a graph that falls apart into pieces has nothing to tie them together). */
   size_t components = 0;
   size_t stages = 1;            ///< gnc, adaptive: kernels optimized in turn
+  /** Conjugate-gradient iterations of the solves whose factor left weak edges out (gnc's
+   * first stage on a dense graph; 0: every solve was direct). */
+  size_t cg_iterations = 0;
   /** The kernel per edge kind at the end (adaptive: as estimated from the residuals). */
   KindKernels kernels{};
   std::vector<size_t> switched_off;  ///< robustified edges whose final weight is below switched_off_weight
