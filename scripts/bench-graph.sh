@@ -7,7 +7,7 @@
 # (scripts/install-deps.sh --with-bench), Ceres with a Cauchy loss; the same on MRPT's 50-node
 # circle graph. Per case: distance to the outlier-free optimum, the chi2 of the true edges at
 # the result against the optimum's, the edges switched off (precision, recall against the
-# false loops), wall and CPU time, iterations. Then the solver comparison of
+# false loops), wall and CPU time (median of 3 runs), iterations. Then the solver comparison of
 # swslam-bench-graph (ours vs MRPT vs Ceres).
 # Usage: scripts/bench-graph.sh [NODES]   (needs a build: scripts/build.sh)
 set -euo pipefail
@@ -21,6 +21,6 @@ if command -v taskset > /dev/null; then pin=(taskset -c 0); fi
 export OMP_THREAD_LIMIT=1
 echo "== false loops on a ${nodes}-node grid walk, one core"
 "${pin[@]}" "$bin" --nodes "$nodes" --false-loops 0 --false-loops 10 --false-loops 100 --false-loops 500 \
-  --false-loops 1000
+  --false-loops 1000 --repeats 3
 echo "== solvers (ours, MRPT, Ceres) on the same graphs"
 "${pin[@]}" "$bin" --repeats 3
