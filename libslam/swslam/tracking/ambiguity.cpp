@@ -55,6 +55,75 @@ Ambiguity findWeakDirections(const Eigen::Matrix3d& cov, double length, double t
   return a;
 }
 
+FacingNormals facingNormals(const std::vector<Eigen::Vector2d>& points, double min_segment)
+{
+  const int n = static_cast<int>(points.size());
+  FacingNormals out;
+  out.lo.assign(points.size(), Eigen::Vector2d::Zero());
+  out.hi.assign(points.size(), Eigen::Vector2d::Zero());
+  if (!(min_segment > 0)) return out;
+  const double min2 = min_segment * min_segment;
+  const double max2 = kFacingMaxSegmentFactor * kFacingMaxSegmentFactor * min2;
+  for (int i = 0; i < n; i++)
+    for (const int step : {-1, 1})
+    {
+      for (int s = 1, k = i + step; s <= kFacingMaxWalk && k >= 0 && k < n; s++, k += step)
+      {
+        if ((points[k] - points[k - step]).squaredNorm() > max2) break;  // a gap: another surface
+        const Eigen::Vector2d chord = points[k] - points[i];
+        const double d2 = chord.squaredNorm();
+        if (d2 > max2) break;
+        if (d2 < min2) continue;
+        const Eigen::Vector2d e = chord / std::sqrt(d2);
+        (step < 0 ? out.lo : out.hi)[i] = Eigen::Vector2d(-e.y(), e.x());
+        break;
+      }
+    }
+  return out;
+}
+
+size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double length)
+{
+  const size_t n = scan.points.size();
+  if (!(length > 0) || scan.normals.lo.size() != n || scan.normals.hi.size() != n) return 0;
+  // The direction in the scan's own frame: a normal turned by the heading dotted with v is the
+  // normal dotted with v turned back; the rotation term does not depend on the frame.
+  const double c = std::cos(scan.heading), s = std::sin(scan.heading);
+  const Eigen::Vector3d w(c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z());
+  size_t facing = 0;
+  for (size_t i = 0; i < n; i++)
+  {
+    const Eigen::Vector2d& q = scan.points[i];
+    for (const Eigen::Vector2d* normal : {&scan.normals.lo[i], &scan.normals.hi[i]})
+    {
+      const Eigen::Vector3d row(normal->x(), normal->y(), (normal->y() * q.x() - normal->x() * q.y()) / length);
+      if (std::abs(row.dot(w)) >= kFacingSensitivity)
+      {
+        facing++;
+        break;
+      }
+    }
+  }
+  return facing;
+}
+
+Ambiguity unobservableDirections(const Ambiguity& a, const FacingView& reference, const FacingView& current,
+                                 double length, int min_rays)
+{
+  Ambiguity u = a;
+  u.weak = 0;
+  u.directions.setZero();
+  if (min_rays <= 0) return u;
+  const auto few = static_cast<size_t>(min_rays);
+  for (int k = 0; k < a.weak; k++)
+  {
+    const Eigen::Vector3d v = a.directions.col(k);
+    if (raysFacing(reference, v, length) < few || raysFacing(current, v, length) < few)
+      u.directions.col(u.weak++) = v;
+  }
+  return u;
+}
+
 void takePriorAlongWeak(Eigen::Vector3d& pose, Eigen::Matrix3d& cov, const Eigen::Vector3d& prior,
                         const Eigen::Matrix3d& prior_cov, const Ambiguity& a, double length)
 {

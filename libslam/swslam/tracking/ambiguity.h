@@ -47,6 +47,52 @@ double rotationLength(const std::vector<Eigen::Vector2d>& points);
  * covariance that is not finite, or not positive definite, has every direction weak. */
 Ambiguity findWeakDirections(const Eigen::Matrix3d& cov, double length, double threshold);
 
+/** Per unit step along a normalized direction v, the change of the point-to-line residual of
+ * a point q with segment normal n: |[n, n . perp(q) / length] . v|, perp(q) = (-q_y, q_x).
+ * A ray whose sensitivity reaches this is evidence along v: range noise tilts the normal of
+ * a featureless wall's segments by about sqrt(2) sigma / min_segment_length (0.07 with 1 cm
+ * noise and 20 cm segments), a surface facing v (a door's jamb, a pillar, a corner) by far
+ * more. */
+constexpr double kFacingSensitivity = 0.3;
+
+/** The facing test's surface normals: per point, the unit normals (turned +90 deg from the
+ * chord) of the chords to the first point at least `min_segment` away on either side, walking
+ * at most kFacingMaxWalk rays through consecutive points no farther than
+ * kFacingMaxSegmentFactor * min_segment apart, the chord itself no longer than that; a zero
+ * vector where there is none. A shorter chord has a normal that noise tilts by more than
+ * sqrt(2) sigma / min_segment; a longer one, or one across a gap, joins two surfaces (the far
+ * ends of a corridor's two walls across the rays that reach neither), and its normal tells
+ * nothing of either. A door's jamb or recess is walked within a few decimetres. */
+struct FacingNormals
+{
+  std::vector<Eigen::Vector2d> lo, hi;
+};
+constexpr double kFacingMaxSegmentFactor = 3.0;
+constexpr int kFacingMaxWalk = 64;
+FacingNormals facingNormals(const std::vector<Eigen::Vector2d>& points, double min_segment);
+
+/** A scan's points and their FacingNormals, in its sensor's frame, which is turned by
+ * `heading` from the frame the directions are given in. */
+struct FacingView
+{
+  const std::vector<Eigen::Vector2d>& points;
+  const FacingNormals& normals;
+  double heading = 0;
+};
+
+/** How many of the scan's points face the normalized direction `v`: a point counts when the
+ * sensitivity of either of its normals reaches kFacingSensitivity. 0 when the vectors differ
+ * in size or length is not positive. */
+size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double length);
+
+/** The weak directions of `a` that fewer than `min_rays` points of either scan face
+ * (raysFacing; the two scans of a match: where only one of them sees a surface facing a
+ * direction, their overlap does not): directions no surface informs, as a single wall's own
+ * line, unlike a corridor whose doors and recesses inform its axis, if weakly. None when
+ * min_rays is 0. */
+Ambiguity unobservableDirections(const Ambiguity& a, const FacingView& reference, const FacingView& current,
+                                 double length, int min_rays);
+
 /** Takes the prior along the weak directions, where the match's information is no more than
  * noise fakes: along each weak direction v (normalized coordinates) the pose's component
  * becomes the prior's (angles wrapped) and its variance the prior's variance along v; across

@@ -169,3 +169,113 @@ TEST(Ambiguity, AWeakDirectionTakesThePriorsValueAndVariance)
   EXPECT_EQ(p2, prior);
   EXPECT_EQ(bad, prior_cov);
 }
+
+namespace
+{
+/** Points along the segment a-b, `n` of them, in order. */
+void addLine(std::vector<Eigen::Vector2d>& pts, Eigen::Vector2d a, Eigen::Vector2d b, int n)
+{
+  for (int k = 0; k < n; k++) pts.push_back(a + (b - a) * k / (n - 1.0));
+}
+
+/** The slow version of raysFacing: each point and normal turned into the directions' frame
+ * explicitly, the point-to-line residual's change per unit step along v by finite differences
+ * of the pose [x, y, theta] = v / diag(1, 1, length) * h. */
+size_t slowFacing(const std::vector<Eigen::Vector2d>& pts, const FacingNormals& nrm, double heading,
+                  const Eigen::Vector3d& v, double length)
+{
+  const Eigen::Rotation2Dd R(heading);
+  const double h = 1e-6;
+  size_t count = 0;
+  for (size_t i = 0; i < pts.size(); i++)
+  {
+    bool facing = false;
+    for (const Eigen::Vector2d& n0 : {nrm.lo[i], nrm.hi[i]})
+    {
+      const Eigen::Vector2d q = R * pts[i], n = R * n0;
+      // Moving the scan by the pose moves q to Rot(theta) q + t; the residual is n . (that - q).
+      const Eigen::Vector3d d = h * Eigen::Vector3d(v.x(), v.y(), v.z() / length);
+      const Eigen::Vector2d moved = Eigen::Rotation2Dd(d.z()) * q + d.head<2>();
+      if (std::abs(n.dot(moved - q)) / h >= kFacingSensitivity) facing = true;
+    }
+    count += facing;
+  }
+  return count;
+}
+}  // namespace
+
+TEST(Ambiguity, FacingNormalsAreThoseOfTheSurfaceNotOfAGap)
+{
+  // A wall along x at y = 2, a gap, then a wall along y at x = 3 (a corner seen from afar).
+  std::vector<Eigen::Vector2d> pts;
+  addLine(pts, {-2, 2}, {1, 2}, 61);  // 5 cm apart
+  addLine(pts, {3, 1.5}, {3, -1.5}, 31);  // 10 cm apart, 2 m from the first wall's end
+  const FacingNormals n = facingNormals(pts, 0.2);
+  for (size_t i = 0; i < pts.size(); i++)
+    for (const Eigen::Vector2d& v : {n.lo[i], n.hi[i]})
+      if (v.squaredNorm() > 0)
+      {
+        EXPECT_NEAR(v.norm(), 1.0, 1e-12);
+        EXPECT_NEAR(std::abs(v.dot(i < 61 ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(1, 0))), 1.0, 1e-9) << i;
+      }
+  // No chord spans the gap: the first wall's last points have no normal on the high side, the
+  // second wall's first points none on the low side; inside each wall both exist.
+  EXPECT_EQ(n.hi[60].squaredNorm(), 0);
+  EXPECT_EQ(n.lo[61].squaredNorm(), 0);
+  EXPECT_GT(n.lo[30].squaredNorm(), 0);
+  EXPECT_GT(n.hi[30].squaredNorm(), 0);
+  // A point with no neighbour 20 cm away on a side has no normal there (the scan's ends).
+  EXPECT_EQ(n.lo[0].squaredNorm(), 0);
+  EXPECT_EQ(n.hi[90].squaredNorm(), 0);
+}
+
+TEST(Ambiguity, RaysFacingADirectionAgreeWithTheSlowVersion)
+{
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.01);
+  std::vector<Eigen::Vector2d> pts;
+  addLine(pts, {-4, 1.5}, {4, 1.5}, 161);
+  addLine(pts, {4.5, 1.0}, {4.5, -1.0}, 21);  // an end wall
+  addLine(pts, {3, -1.5}, {-4, -1.5}, 141);
+  for (auto& p : pts) p += Eigen::Vector2d(noise(rng), noise(rng));
+  const FacingNormals n = facingNormals(pts, 0.2);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int t = 0; t < 200; t++)
+  {
+    const Eigen::Vector3d v = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+    const double heading = 3 * u(rng), length = 1 + std::abs(2 * u(rng));
+    EXPECT_EQ(raysFacing({pts, n, heading}, v, length), slowFacing(pts, n, heading, v, length));
+  }
+  // Along the corridor's axis only the end wall faces; across it, both side walls.
+  EXPECT_NEAR(static_cast<double>(raysFacing({pts, n, 0.0}, {1, 0, 0}, 3.0)), 21, 2);
+  EXPECT_GT(raysFacing({pts, n, 0.0}, {0, 1, 0}, 3.0), 250u);
+}
+
+TEST(Ambiguity, AWallsLineIsUnobservableACorridorWithAnEndIsNot)
+{
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0, 0.01);
+  std::vector<Eigen::Vector2d> wall, ended;
+  addLine(wall, {-4, 1.5}, {4, 1.5}, 161);
+  ended = wall;
+  addLine(ended, {4.5, 1.0}, {4.5, -1.0}, 21);
+  for (auto* s : {&wall, &ended})
+    for (auto& p : *s) p += Eigen::Vector2d(noise(rng), noise(rng));
+  const FacingNormals nw = facingNormals(wall, 0.2), ne = facingNormals(ended, 0.2);
+  Ambiguity a;
+  a.weak = 1;
+  a.directions.col(0) = Eigen::Vector3d(1, 0, 0);
+  // Both scans see only the wall: unobservable (noise tilts no 20 cm chord by 0.3).
+  EXPECT_EQ(unobservableDirections(a, {wall, nw, 0.0}, {wall, nw, 0.0}, 3.0, 3).weak, 1);
+  // One of them sees the end wall: the other does not, so their overlap does not either.
+  EXPECT_EQ(unobservableDirections(a, {ended, ne, 0.0}, {wall, nw, 0.0}, 3.0, 3).weak, 1);
+  // Both see it: observable, if weakly.
+  EXPECT_EQ(unobservableDirections(a, {ended, ne, 0.0}, {ended, ne, 0.0}, 3.0, 3).weak, 0);
+  // Off (0), or no weak direction to test: none.
+  EXPECT_EQ(unobservableDirections(a, {wall, nw, 0.0}, {wall, nw, 0.0}, 3.0, 0).weak, 0);
+  a.weak = 0;
+  EXPECT_EQ(unobservableDirections(a, {wall, nw, 0.0}, {wall, nw, 0.0}, 3.0, 3).weak, 0);
+  // Mismatched sizes count nothing (and read nothing past the scan).
+  const FacingNormals empty;
+  EXPECT_EQ(raysFacing({wall, empty, 0.0}, {0, 1, 0}, 3.0), 0u);
+}

@@ -164,6 +164,7 @@ Keyframe& LocalTracker::addKeyframe(const sensor::Scan& scan, const CPose2D& pos
   kf.id = keyframes_.size();
   kf.pose = pose;
   kf.scan = std::make_shared<const plicp::ReferenceScan>(scan, plicp_);
+  kf.facing = std::make_shared<const FacingNormals>(facingNormals(scan.points, plicp_.min_segment_length));
   kf.sensor_pose = scan.sensor_pose;
   kf.timestamp = scan.timestamp;
   keyframes_.push_back(std::move(kf));
@@ -176,20 +177,37 @@ bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
          std::abs(rel.phi()) > tracking_.keyframe_rotation;
 }
 
-int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const CPose2D& prior, double prior_var_xy,
-                                     double length) const
+int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref,
+                                     const FacingNormals& ref_facing, const sensor::Scan& cur, const CPose2D& prior,
+                                     double prior_var_xy, double length) const
 {
   if (!m.ok() || tracking_.ambiguity_factor <= 0) return 0;
   const double noise = residualNoiseVariance(m.sum_sq_residuals, m.correspondences, plicp_.range_sigma * plicp_.range_sigma);
   const double threshold = weakRatioThreshold(noise, plicp_.min_segment_length, tracking_.ambiguity_factor);
   const Ambiguity a = findWeakDirections(m.covariance, length, threshold);
-  if (!tracking_.ambiguity_take_prior) return a.weak;
+  // Along a direction no surface faces, the match moved by noise alone (a single wall lets the
+  // scans slide along it by metres): the prediction decides there, whatever the setting. The
+  // match's two weaker directions are candidates whatever their information says: a wall's
+  // line can look informed by the noise of one scan (about one in ten on a simulated wall).
+  Ambiguity taken = a;
+  if (!tracking_.ambiguity_take_prior)
+  {
+    taken.weak = 0;
+    if (tracking_.unobservable_min_rays > 0)
+    {
+      const FacingNormals normals = facingNormals(cur.points, plicp_.min_segment_length);
+      taken = unobservableDirections(findWeakDirections(m.covariance, length, 1.0), {ref.scan.points, ref_facing, 0.0},
+                                     {cur.points, normals, m.pose.phi()}, length, tracking_.unobservable_min_rays);
+    }
+  }
+  if (taken.weak == 0) return a.weak;
+  const int ambiguous = std::max(a.weak, taken.weak);
   const double sth = tracking_.lost_prior_sigma_theta;
   Eigen::Vector3d x(m.pose.x(), m.pose.y(), m.pose.phi());
   takePriorAlongWeak(x, m.covariance, Eigen::Vector3d(prior.x(), prior.y(), prior.phi()),
-                     Eigen::Vector3d(prior_var_xy, prior_var_xy, sth * sth).asDiagonal(), a, length);
+                     Eigen::Vector3d(prior_var_xy, prior_var_xy, sth * sth).asDiagonal(), taken, length);
   m.pose = CPose2D(x.x(), x.y(), x.z());
-  return a.weak;
+  return ambiguous;
 }
 
 std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, const Keyframe& to,
@@ -201,7 +219,8 @@ std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, c
   if (!m.ok()) return std::nullopt;
   // Along a direction the pair does not constrain, the chain decides, with the variance of a
   // node made without a match: never a confident pull along a corridor.
-  takePriorWhereWeak(m, guess, tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy, rotationLength(scan.points));
+  takePriorWhereWeak(m, *from.scan, *from.facing, scan, guess,
+                     tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy, rotationLength(scan.points));
   // The chain between recent nodes is accurate to centimetres: a match far from it found
   // another local minimum (low overlap, repeated structure), not a correction.
   if ((m.pose.translation() - guess.translation()).norm() > tracking_.dense_gate_xy ||
@@ -266,7 +285,8 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   // prediction replaced its weak directions, which would confirm it there by construction.
   const plicp::MatchResult raw = step.match;
   const double lost_var = tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy;
-  step.ambiguous = takePriorWhereWeak(step.match, geometry::sensorMotion(last.sensor_pose, predicted),
+  step.ambiguous = takePriorWhereWeak(step.match, *last.scan, *last.facing, scan,
+                                      geometry::sensorMotion(last.sensor_pose, predicted),
                                       steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
                                       rotationLength(scan.points)) +
                    (step.two_peaks ? 1 : 0);

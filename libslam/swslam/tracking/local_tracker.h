@@ -10,6 +10,7 @@
 #include <swslam/graph/constraint.h>
 #include <swslam/plicp/plicp.h>
 #include <swslam/tracking/local_map.h>
+#include <swslam/tracking/ambiguity.h>
 #include <swslam/tracking/params.h>
 #include <swslam/tracking/steady_motion.h>
 
@@ -29,6 +30,7 @@ struct Keyframe
   size_t id = 0;
   mrpt::poses::CPose2D pose;  ///< vehicle pose in the map frame (updated by the optimizer)
   std::shared_ptr<const plicp::ReferenceScan> scan;
+  std::shared_ptr<const FacingNormals> facing;  ///< of scan's points (tracking/ambiguity.h)
   mrpt::poses::CPose2D sensor_pose;  ///< sensor mounting on the vehicle
   mrpt::Clock::time_point timestamp;
 };
@@ -88,10 +90,12 @@ class LocalTracker
                                        graph::EdgeKind kind) const;
   graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
-  /** The weak directions of a converged match (tracking/ambiguity.h): returns how many, and
-   * with ambiguity_take_prior takes `prior` (sensor frame; translation variance prior_var_xy,
-   * rotation variance lost_prior_sigma_theta^2) along them. */
-  int takePriorWhereWeak(plicp::MatchResult& m, const mrpt::poses::CPose2D& prior, double prior_var_xy,
+  /** The weak directions of a converged match of `cur` against `ref` (tracking/ambiguity.h):
+   * returns how many, and takes `prior` (sensor frame; translation variance prior_var_xy,
+   * rotation variance lost_prior_sigma_theta^2) along those of them that are unobservable, or
+   * along all of them with ambiguity_take_prior. */
+  int takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref, const FacingNormals& ref_facing,
+                         const sensor::Scan& cur, const mrpt::poses::CPose2D& prior, double prior_var_xy,
                          double length) const;
   /** After a search: the offset from the match of a second peak of the search's objective of
    * similar height, away from the match's own (correlative/peaks.h), if there is one. */

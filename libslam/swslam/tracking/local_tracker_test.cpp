@@ -366,6 +366,9 @@ struct WeakRun
 {
   int ambiguous_scans = 0, fallback_scans = 0;
   double worst_x_drift = 0;  ///< largest change of the along-x error past the posts [m]
+  /** Largest change of the along-x error from one scan to the next, past the posts [m]: a
+   * scan moved off the others (a steady drift of the prediction's speed counts too). */
+  double worst_x_jump = 0;
   double worst_y_error = 0;
   double min_edge_x_variance = 1e300;  ///< of the consecutive edges past the posts, along x (vehicle frame)
 };
@@ -381,7 +384,7 @@ WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind)
   std::mt19937 rng(21);
   LocalTracker tracker(tp, plicp::PlicpParams());
   WeakRun r;
-  double x_error_20 = 0;
+  double x_error_20 = 0, x_error_previous = 0;
   for (int k = 0; k < 60; k++)
   {
     auto obs = test::simulateObservation(world, CPose2D(0.1 * k, 0, 0), 181, M_PI, 8, 0.01, rng);
@@ -393,6 +396,8 @@ WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind)
     if (step.source == TrackingSource::ConstantMotion) r.fallback_scans++;
     if (k == 20) x_error_20 = step.pose.x() - 0.1 * k;
     if (k >= 20) r.worst_x_drift = std::max(r.worst_x_drift, std::abs(step.pose.x() - 0.1 * k - x_error_20));
+    if (k > 20) r.worst_x_jump = std::max(r.worst_x_jump, std::abs(step.pose.x() - 0.1 * k - x_error_previous));
+    x_error_previous = step.pose.x() - 0.1 * k;
     r.worst_y_error = std::max(r.worst_y_error, std::abs(step.pose.y()));
     for (const auto& e : step.edges)
       if (e.kind == graph::EdgeKind::Consecutive && k >= 25)
@@ -413,11 +418,21 @@ TEST(LocalTracker, AlongACorridorThePredictionDecidesAndTheEdgesSaySo)
   EXPECT_LT(r.worst_y_error, 0.05);
   EXPECT_GE(r.min_edge_x_variance, 0.02)
       << "a keyframe edge along the axis is as uncertain as the prediction's recent errors";
-  // Reported only (the default), the axis is still weak, but the noise's faked information
-  // makes confident edges along it.
-  tp.ambiguity_take_prior = false;
+  // The default (ambiguity_take_prior off): past the posts no ray faces the axis, which is
+  // unobservable, so the prediction decides there too; it keeps the speed the scans with the
+  // posts gave it, a steady drift, never a jump.
+  tp = TrackingParams();
+  const WeakRun unobservable = driveAlongX(test::corridorWorld(), tp, 35);
+  EXPECT_GE(unobservable.ambiguous_scans, 35);
+  EXPECT_LT(unobservable.worst_x_jump, 0.05);
+  EXPECT_LT(unobservable.worst_x_drift, 1.0);
+  EXPECT_GE(unobservable.min_edge_x_variance, 0.02);
+  // Weak directions only reported: the searches slide the scans along the axis by decimetres
+  // at a time, and the noise's faked information makes confident edges along it.
+  tp.unobservable_min_rays = 0;
   const WeakRun reported = driveAlongX(test::corridorWorld(), tp, 35);
   EXPECT_GE(reported.ambiguous_scans, 35);
+  EXPECT_GT(reported.worst_x_jump, 0.3);
   EXPECT_LT(reported.min_edge_x_variance, 0.002);
   tp.ambiguity_factor = 0;
   const WeakRun off = driveAlongX(test::corridorWorld(), tp, 35);
@@ -436,13 +451,22 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   EXPECT_LT(r.worst_x_drift, 0.1);
   EXPECT_LT(r.worst_y_error, 0.05);
   EXPECT_GE(r.min_edge_x_variance, 0.02);
-  // Reported only (the default): every scan past the start is still reported ambiguous, so a
-  // run says where its trajectory rests on little evidence (how far the scans slide along the
-  // wall then is measured in doc/tracking.md, not asserted).
-  tp.ambiguity_take_prior = false;
+  // The default (ambiguity_take_prior off): once the posts are out of sight no ray faces the
+  // wall's line, which is then unobservable: the prediction decides along it just the same,
+  // and every scan is still reported ambiguous. The prediction keeps the speed the scans
+  // with the posts gave it (2.6 cm per scan short, here): a steady drift, never a jump.
+  tp = TrackingParams();
   const WeakRun reported = driveAlongX(wall, tp, -1);
   EXPECT_GE(reported.ambiguous_scans, 35);
   EXPECT_EQ(reported.fallback_scans, 0);
+  EXPECT_LT(reported.worst_x_jump, 0.05) << "no jump along the wall";
+  EXPECT_LT(reported.worst_x_drift, 1.5);
+  EXPECT_LT(reported.worst_y_error, 0.05);
+  // Without the unobservable rule the searches slide the scans along the wall by metres.
+  tp.unobservable_min_rays = 0;
+  const WeakRun slid = driveAlongX(wall, tp, -1);
+  EXPECT_GT(slid.worst_x_jump, 0.3);
+  EXPECT_GT(slid.worst_x_drift, 3.0);
 }
 
 TEST(LocalTracker, ARoomIsNotAmbiguous)

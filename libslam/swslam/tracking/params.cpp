@@ -29,6 +29,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   MRPT_LOAD_CONFIG_VAR_CS(local_map_radius, double);
   MRPT_LOAD_CONFIG_VAR_CS(ambiguity_factor, double);
   MRPT_LOAD_CONFIG_VAR_CS(ambiguity_take_prior, bool);
+  MRPT_LOAD_CONFIG_VAR_CS(unobservable_min_rays, int);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -44,6 +45,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(local_map_keyframes >= 0, "local_map_keyframes must be >= 0");
   require(local_map_radius > 0, "local_map_radius must be > 0");
   require(ambiguity_factor >= 0 && std::isfinite(ambiguity_factor), "ambiguity_factor must be >= 0");
+  require(unobservable_min_rays >= 0, "unobservable_min_rays must be >= 0");
 }
 
 void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -64,6 +66,7 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_radius, "[m] ...those whose sensor is this close to the predicted one");
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_factor, "a match direction with less information than this many times what noise fakes is weak (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a weak direction fewer keyframe rays face is unobservable: the prediction decides (0: never)");
 }
 
 }  // namespace swslam::tracking

@@ -29,6 +29,10 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   /** Along a weak direction the prediction decides, with the variance of its recent errors
    * (false: weak directions are only reported; doc/tracking.md says why that is the default) */
   bool ambiguity_take_prior = false;
+  /** A weak direction that fewer than this many of the keyframe's rays face (a single wall's
+   * line) is unobservable: the prediction decides along it even with ambiguity_take_prior
+   * off (0: never; tracking/ambiguity.h) */
+  int unobservable_min_rays = 3;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
