@@ -82,7 +82,7 @@ FacingNormals facingNormals(const std::vector<Eigen::Vector2d>& points, double m
   return out;
 }
 
-size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double length)
+size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double length, size_t enough)
 {
   const size_t n = scan.points.size();
   if (!(length > 0) || scan.normals.lo.size() != n || scan.normals.hi.size() != n) return 0;
@@ -91,7 +91,7 @@ size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double lengt
   const double c = std::cos(scan.heading), s = std::sin(scan.heading);
   const Eigen::Vector3d w(c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z());
   size_t facing = 0;
-  for (size_t i = 0; i < n; i++)
+  for (size_t i = 0; i < n && facing < enough; i++)
   {
     const Eigen::Vector2d& q = scan.points[i];
     for (const Eigen::Vector2d* normal : {&scan.normals.lo[i], &scan.normals.hi[i]})
@@ -118,7 +118,7 @@ Ambiguity unobservableDirections(const Ambiguity& a, const FacingView& reference
   for (int k = 0; k < a.weak; k++)
   {
     const Eigen::Vector3d v = a.directions.col(k);
-    if (raysFacing(reference, v, length) < few || raysFacing(current, v, length) < few)
+    if (raysFacing(reference, v, length, few) < few || raysFacing(current, v, length, few) < few)
       u.directions.col(u.weak++) = v;
   }
   return u;

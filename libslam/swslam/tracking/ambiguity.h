@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace swslam::tracking
@@ -55,6 +56,12 @@ Ambiguity findWeakDirections(const Eigen::Matrix3d& cov, double length, double t
  * more. */
 constexpr double kFacingSensitivity = 0.3;
 
+/** A match is tested for unobservable directions only if its weakest direction has less than
+ * this many times the weak threshold's information (weakRatioThreshold): noise made a
+ * simulated wall's line look up to 6 times above it in single scans, a room's weakest
+ * direction has 7 to 100 times. */
+constexpr double kFacingCheckRatio = 10.0;
+
 /** The facing test's surface normals: per point, the unit normals (turned +90 deg from the
  * chord) of the chords to the first point at least `min_segment` away on either side, walking
  * at most kFacingMaxWalk rays through consecutive points no farther than
@@ -80,10 +87,11 @@ struct FacingView
   double heading = 0;
 };
 
-/** How many of the scan's points face the normalized direction `v`: a point counts when the
- * sensitivity of either of its normals reaches kFacingSensitivity. 0 when the vectors differ
- * in size or length is not positive. */
-size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double length);
+/** How many of the scan's points face the normalized direction `v`, counted up to `enough`: a
+ * point counts when the sensitivity of either of its normals reaches kFacingSensitivity. 0
+ * when the vectors differ in size or length is not positive. */
+size_t raysFacing(const FacingView& scan, const Eigen::Vector3d& v, double length,
+                  size_t enough = std::numeric_limits<size_t>::max());
 
 /** The weak directions of `a` that fewer than `min_rays` points of either scan face
  * (raysFacing; the two scans of a match: where only one of them sees a surface facing a

@@ -279,3 +279,14 @@ TEST(Ambiguity, AWallsLineIsUnobservableACorridorWithAnEndIsNot)
   const FacingNormals empty;
   EXPECT_EQ(raysFacing({wall, empty, 0.0}, {0, 1, 0}, 3.0), 0u);
 }
+
+TEST(Ambiguity, RaysFacingStopsCountingAtEnough)
+{
+  std::vector<Eigen::Vector2d> pts;
+  addLine(pts, {-4, 1.5}, {4, 1.5}, 161);
+  const FacingNormals n = facingNormals(pts, 0.2);
+  const size_t all = raysFacing({pts, n, 0.0}, {0, 1, 0}, 3.0);
+  ASSERT_GT(all, 100u);
+  EXPECT_EQ(raysFacing({pts, n, 0.0}, {0, 1, 0}, 3.0, 3), 3u);
+  EXPECT_EQ(raysFacing({pts, n, 0.0}, {0, 1, 0}, 3.0, all + 5), all);
+}

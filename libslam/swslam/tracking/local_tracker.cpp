@@ -178,8 +178,9 @@ bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
 }
 
 int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref,
-                                     const FacingNormals& ref_facing, const sensor::Scan& cur, const CPose2D& prior,
-                                     double prior_var_xy, double length) const
+                                     const FacingNormals& ref_facing, const sensor::Scan& cur,
+                                     const FacingNormals* cur_facing, const CPose2D& prior, double prior_var_xy,
+                                     double length) const
 {
   if (!m.ok() || tracking_.ambiguity_factor <= 0) return 0;
   const double noise = residualNoiseVariance(m.sum_sq_residuals, m.correspondences, plicp_.range_sigma * plicp_.range_sigma);
@@ -193,11 +194,16 @@ int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::Referen
   if (!tracking_.ambiguity_take_prior)
   {
     taken.weak = 0;
-    if (tracking_.unobservable_min_rays > 0)
+    const Ambiguity candidates = findWeakDirections(m.covariance, length, 1.0);
+    // Only a match whose weakest direction has less than kFacingCheckRatio times the weak
+    // threshold's information is tested (the scan's normals cost about as much as its match).
+    if (tracking_.unobservable_min_rays > 0 && candidates.ratio < kFacingCheckRatio * threshold)
     {
-      const FacingNormals normals = facingNormals(cur.points, plicp_.min_segment_length);
-      taken = unobservableDirections(findWeakDirections(m.covariance, length, 1.0), {ref.scan.points, ref_facing, 0.0},
-                                     {cur.points, normals, m.pose.phi()}, length, tracking_.unobservable_min_rays);
+      FacingNormals own;
+      if (!cur_facing) own = facingNormals(cur.points, plicp_.min_segment_length);
+      taken = unobservableDirections(candidates, {ref.scan.points, ref_facing, 0.0},
+                                     {cur.points, cur_facing ? *cur_facing : own, m.pose.phi()}, length,
+                                     tracking_.unobservable_min_rays);
     }
   }
   if (taken.weak == 0) return a.weak;
@@ -219,7 +225,7 @@ std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, c
   if (!m.ok()) return std::nullopt;
   // Along a direction the pair does not constrain, the chain decides, with the variance of a
   // node made without a match: never a confident pull along a corridor.
-  takePriorWhereWeak(m, *from.scan, *from.facing, scan, guess,
+  takePriorWhereWeak(m, *from.scan, *from.facing, scan, to.facing.get(), guess,
                      tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy, rotationLength(scan.points));
   // The chain between recent nodes is accurate to centimetres: a match far from it found
   // another local minimum (low overlap, repeated structure), not a correction.
@@ -285,7 +291,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   // prediction replaced its weak directions, which would confirm it there by construction.
   const plicp::MatchResult raw = step.match;
   const double lost_var = tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy;
-  step.ambiguous = takePriorWhereWeak(step.match, *last.scan, *last.facing, scan,
+  step.ambiguous = takePriorWhereWeak(step.match, *last.scan, *last.facing, scan, nullptr,
                                       geometry::sensorMotion(last.sensor_pose, predicted),
                                       steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
                                       rotationLength(scan.points)) +

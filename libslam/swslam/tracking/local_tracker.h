@@ -90,13 +90,14 @@ class LocalTracker
                                        graph::EdgeKind kind) const;
   graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
-  /** The weak directions of a converged match of `cur` against `ref` (tracking/ambiguity.h):
-   * returns how many, and takes `prior` (sensor frame; translation variance prior_var_xy,
-   * rotation variance lost_prior_sigma_theta^2) along those of them that are unobservable, or
-   * along all of them with ambiguity_take_prior. */
+  /** The weak directions of a converged match of `cur` against `ref`, given with their
+   * FacingNormals (`cur_facing` nullptr: computed here if needed; tracking/ambiguity.h):
+   * returns how many, and takes `prior` (sensor frame;
+   * translation variance prior_var_xy, rotation variance lost_prior_sigma_theta^2) along those
+   * of them that are unobservable, or along all of them with ambiguity_take_prior. */
   int takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref, const FacingNormals& ref_facing,
-                         const sensor::Scan& cur, const mrpt::poses::CPose2D& prior, double prior_var_xy,
-                         double length) const;
+                         const sensor::Scan& cur, const FacingNormals* cur_facing, const mrpt::poses::CPose2D& prior,
+                         double prior_var_xy, double length) const;
   /** After a search: the offset from the match of a second peak of the search's objective of
    * similar height, away from the match's own (correlative/peaks.h), if there is one. */
   std::optional<Eigen::Vector3d> secondPeakOffset(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess,
