@@ -7,7 +7,16 @@
 
 namespace swslam::graph
 {
-NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs)
+double NormalEquations::fillPerColumnOf(int free_blocks, const std::vector<std::pair<int, int>>& pairs)
+{
+  std::vector<std::pair<int, int>> free_pairs;
+  free_pairs.reserve(pairs.size());
+  for (const auto& ab : pairs)
+    if (ab.first >= 0 && ab.second >= 0) free_pairs.push_back(ab);
+  return NormalEquations(free_blocks, free_pairs, false).fillPerColumn();
+}
+
+NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs, bool dense_solver)
     : position_(amdBlockOrder(free_blocks, pairs)),  // checks the pairs
       H_(3 * free_blocks, 3 * free_blocks),
       g_(Eigen::VectorXd::Zero(3 * free_blocks)),
@@ -54,7 +63,7 @@ NormalEquations::NormalEquations(int free_blocks, const std::vector<std::pair<in
   damped_ = H_;
   simplicial_.analyzePattern(damped_);
   fill_per_column_ = simplicial_.factorNonZeros() / std::max<Eigen::Index>(1, g_.size());
-  if (g_.size() >= kCholmodMinDimension && fill_per_column_ > kCholmodMinFillPerColumn)
+  if (dense_solver && g_.size() >= kCholmodMinDimension && fill_per_column_ > kCholmodMinFillPerColumn)
   {
     // A dense factor (an area revisited over and over): CHOLMOD's supernodal Cholesky.
     use_cholmod_ = true;

@@ -26,7 +26,10 @@ class NormalEquations
    * that edges couple (duplicates and either order allowed; a == b adds nothing). Edges
    * touching one free variable only need the diagonal block, always present. Throws
    * std::invalid_argument for a block index outside [0, free_blocks). */
-  NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs);
+  NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs)
+      : NormalEquations(free_blocks, pairs, true)
+  {
+  }
 
   void setZero();
   /** H_aa += block (a symmetric block). */
@@ -57,6 +60,10 @@ class NormalEquations
   bool usesCholmod() const { return use_cholmod_; }
   /** Non-zeros per column of the factor in the blocks' AMD order (the symbolic analysis). */
   double fillPerColumn() const { return fill_per_column_; }
+  /** fillPerColumn() of the normal equations of these pairs (a pair with a block -1, a fixed
+   * pose, adds nothing), from the blocks' AMD order and the simplicial analysis alone (no
+   * CHOLMOD analysis however dense). */
+  static double fillPerColumnOf(int free_blocks, const std::vector<std::pair<int, int>>& pairs);
 
   /** CHOLMOD is used for systems of at least this many unknowns whose factor holds more
    * than kCholmodMinFillPerColumn non-zeros per column (decided by the symbolic analysis). */
@@ -64,6 +71,9 @@ class NormalEquations
   static constexpr double kCholmodMinFillPerColumn = 40.0;
 
  private:
+  /** With `dense_solver` false, the simplicial factorization whatever the fill (for
+   * fillPerColumnOf(), which solves nothing). */
+  NormalEquations(int free_blocks, const std::vector<std::pair<int, int>>& pairs, bool dense_solver);
   int slot(int row, int col) const;  // index into H_.valuePtr() of (row, col), row <= col
   /** H_{row_block, col_block} += block, in stored (ordered) block indices, row <= col. */
   void addStoredBlock(int row_block, int col_block, const Eigen::Matrix3d& block);

@@ -137,3 +137,20 @@ TEST(NormalEquations, PairOutsideTheBlocksIsAnError)
   EXPECT_THROW(swslam::graph::NormalEquations(3, {{0, 3}}), std::invalid_argument);
   EXPECT_THROW(swslam::graph::NormalEquations(3, {{-1, 1}}), std::invalid_argument);
 }
+
+TEST(NormalEquations, FillProbeEqualsTheAnalysisOfTheSameSystem)
+{
+  std::vector<std::pair<int, int>> chain, dense;
+  for (int a = 1; a < 200; ++a) chain.emplace_back(a - 1, a);
+  for (int a = 0; a < 120; ++a)
+    for (int b = 0; b < a; b += 2) dense.emplace_back(a, b);
+  const swslam::graph::NormalEquations sparse_ne(200, chain), dense_ne(120, dense);
+  EXPECT_FALSE(sparse_ne.usesCholmod());
+  EXPECT_TRUE(dense_ne.usesCholmod());
+  EXPECT_EQ(swslam::graph::NormalEquations::fillPerColumnOf(200, chain), sparse_ne.fillPerColumn());
+  EXPECT_EQ(swslam::graph::NormalEquations::fillPerColumnOf(120, dense), dense_ne.fillPerColumn());
+  EXPECT_GT(dense_ne.fillPerColumn(), 10 * sparse_ne.fillPerColumn());
+  // An edge to a fixed pose (-1) couples nothing.
+  chain.emplace_back(-1, 5);
+  EXPECT_EQ(swslam::graph::NormalEquations::fillPerColumnOf(200, chain), sparse_ne.fillPerColumn());
+}

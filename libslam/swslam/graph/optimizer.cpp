@@ -191,7 +191,7 @@ constexpr double kDecoupledWeight = 0.01;
  * fill-in. */
 constexpr double kMinDecoupledShare = 0.01;
 
-/** An exact solve (SystemUse::exact) decouples edges only if every edge coupled fills the
+/** An exact solve (Coupling::Exact) decouples edges only if every edge coupled fills the
  * factor in beyond this many non-zeros per column, and then those whose weight is below
  * kPreconditionerWeight. On the false-loop benchmark's grid walk (doc/graph-optimization.md)
  * the factor holds about 40 per column with no false loop, 50 with 100 and 130-210 with
@@ -201,26 +201,32 @@ constexpr double kMinDecoupledShare = 0.01;
 constexpr double kDenseFillPerColumn = 100.0;
 constexpr double kPreconditionerWeight = 0.1;
 
+/** Which edges an optimization couples in its normal equations (coupled_system.h). */
+enum class Coupling
+{
+  All,  ///< every edge
+  /** Those the last solve kept coupled (of the same edges), less the edges whose weight is
+   * below kDecoupledWeight, checked at the start and after every accepted step. */
+  DecoupleWeak,
+  /** As DecoupleWeak, but from every edge coupled (after an Exact solve, whose decoupled
+   * edges were weak at its own start, before its steps). */
+  DecoupleWeakAfresh,
+  /** Every edge, unless that factor is dense (kDenseFillPerColumn); then the edges weak at
+   * the start (kPreconditionerWeight) are decoupled for the whole solve, but their blocks
+   * are still in it, off the factor's pattern (conjugate gradients preconditioned by the
+   * factor): the step is the coupled one, at the cost of a sparse factor. */
+  Exact,
+};
+
 /** How an optimization keeps its normal equations. */
 struct SystemUse
 {
   CoupledSystem* shared = nullptr;  ///< kept across solves (nullptr: one of its own)
-  /** Decouple the edges whose weight is below kDecoupledWeight, checked at the start and
-   * after every accepted step (and keep those the last solve decoupled). */
-  bool decouple = false;
+  Coupling coupling = Coupling::All;
   /** The damping, carried from one solve to the next that goes on from its poses (nullptr:
    * lm_initial_lambda). In: the damping to start with, if positive, at most
    * lm_initial_lambda; out: the damping at the end. */
   double* damping = nullptr;
-  /** Instead of decouple: every edge coupled, unless that factor is dense
-   * (kDenseFillPerColumn); then the edges weak at the start (kPreconditionerWeight) are
-   * decoupled for the whole solve, but their blocks are still in it, off the factor's
-   * pattern (conjugate gradients preconditioned by the factor): the step is the coupled
-   * one, at the cost of a sparse factor. */
-  bool exact = false;
-  /** With decouple: every edge coupled at the start, not those of the solve before (an exact
-   * one's: its edges were weak at its own start, before its steps). */
-  bool fresh = false;
 };
 
 /** Levenberg-Marquardt with IRLS reweighting at every linearization (eq. 11-13). Updates x
@@ -237,20 +243,17 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
   CoupledSystem& sys = use.shared ? *use.shared : own;
   const size_t min_decoupled =
       std::max<size_t>(1, static_cast<size_t>(kMinDecoupledShare * static_cast<double>(p.edges.size())));
-  if (use.exact)
-  {
-    sys.prepare(static_cast<int>(rep.free_nodes), pairs, false);
-    if (sys.equations().fillPerColumn() > kDenseFillPerColumn)
-      sys.prepareDecoupled(static_cast<int>(rep.free_nodes), pairs,
-                           weakEdges(p, x, kernel, rz, kPreconditionerWeight), min_decoupled);
-  }
-  else if (use.decouple && use.fresh)
-    sys.prepareDecoupled(static_cast<int>(rep.free_nodes), pairs, weakEdges(p, x, kernel, rz, kDecoupledWeight),
-                         min_decoupled);
+  const int free_blocks = static_cast<int>(rep.free_nodes);
+  const bool exact = use.coupling == Coupling::Exact;
+  const bool decouple = use.coupling == Coupling::DecoupleWeak || use.coupling == Coupling::DecoupleWeakAfresh;
+  if (exact && NormalEquations::fillPerColumnOf(free_blocks, pairs) > kDenseFillPerColumn)
+    sys.prepareDecoupled(free_blocks, pairs, weakEdges(p, x, kernel, rz, kPreconditionerWeight), min_decoupled);
+  else if (use.coupling == Coupling::DecoupleWeakAfresh)
+    sys.prepareDecoupled(free_blocks, pairs, weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
   else
   {
-    sys.prepare(static_cast<int>(rep.free_nodes), pairs, use.decouple);
-    if (use.decouple) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
+    sys.prepare(free_blocks, pairs, decouple);
+    if (decouple) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
   }
 
   // Carried over from a solve from nearby poses: there the damping had already fallen, and
@@ -265,7 +268,7 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
   while (rep.iterations < params.max_iterations)
   {
     NormalEquations& ne = sys.equations();
-    if (relinearize) linearize(p, x, var, kernel, rz, sys, use.exact, ne);
+    if (relinearize) linearize(p, x, var, kernel, rz, sys, exact, ne);
     relinearize = false;
     if (ne.gradient().lpNorm<Eigen::Infinity>() < params.gradient_tolerance)
       return {OptimizationStatus::Converged, "gradient below tolerance"};
@@ -294,7 +297,7 @@ Outcome levenbergMarquardt(const GraphProblem& p, const std::vector<int>& var,
         return {OptimizationStatus::Converged, "relative cost decrease below tolerance"};
       if (dx.norm() <= params.step_tolerance * (std::sqrt(x_norm2) + params.step_tolerance))
         return {OptimizationStatus::Converged, "step below tolerance"};
-      if (use.decouple && !use.exact) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
+      if (decouple) sys.decouple(weakEdges(p, x, kernel, rz, kDecoupledWeight), min_decoupled);
       continue;
     }
     lambda *= nu;
@@ -494,7 +497,7 @@ OptimizationReport leastSquaresOnKept(GraphProblem& problem, const std::vector<s
     else
       kept.edges.push_back(problem.edges[n]);
   }
-  const OptimizationReport r = optimizeWithKernels(kept, params, uniformKernels({2.0, params.kernel_c}), {&sys, false, damping});  // the kept edges: sparse
+  const OptimizationReport r = optimizeWithKernels(kept, params, uniformKernels({2.0, params.kernel_c}), {&sys, Coupling::All, damping});  // the kept edges: sparse
   if (r.status != OptimizationStatus::Diverged) problem.poses = kept.poses;
   return r;
 }
@@ -599,14 +602,15 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
     // spoiled the stage (with no false loop, 145 edges decoupled after its first step, and
     // 69 true edges ended switched off by the target kernel instead of none). Where that
     // factor is dense (a thousand long false loops), the weak edges are solved by conjugate
-    // gradients off the factor's pattern instead (SystemUse::exact). The next stage starts
+    // gradients off the factor's pattern instead (Coupling::Exact). The next stage starts
     // with every edge coupled again, then decouples those weak at its own poses. The
     // adaptive kernel decouples nothing: with it, 100 random false loops ended 0.027 m off
     // with a true edge switched off, against 0.0004 m.
-    SystemUse use{&sys, !adaptive && k > 0, &damping};
-    use.exact = !adaptive && k == 0;
-    use.fresh = k == 1;
-    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, use);
+    const Coupling coupling = adaptive ? Coupling::All
+                              : k == 0 ? Coupling::Exact
+                              : k == 1 ? Coupling::DecoupleWeakAfresh
+                                       : Coupling::DecoupleWeak;
+    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, coupling, &damping});
     if (k == 0)
     {
       total = s;
