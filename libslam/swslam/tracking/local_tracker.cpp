@@ -196,7 +196,8 @@ int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::Referen
     taken.weak = 0;
     const Ambiguity candidates = findWeakDirections(m.covariance, length, 1.0);
     // Only a match whose weakest direction has less than kFacingCheckRatio times the weak
-    // threshold's information is tested (the scan's normals cost about as much as its match).
+    // threshold's information is tested: the scan's normals and the counts for every match
+    // cost 0.04-0.06 ms per scan on the valley (doc/tracking.md).
     if (tracking_.unobservable_min_rays > 0 && candidates.ratio < kFacingCheckRatio * threshold)
     {
       FacingNormals own;
