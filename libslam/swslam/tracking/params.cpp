@@ -66,7 +66,7 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_radius, "[m] ...those whose sensor is this close to the predicted one");
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_factor, "a match direction with less information than this many times what noise fakes is weak (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a weak direction fewer keyframe rays face is unobservable: the prediction decides (0: never)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a match direction fewer rays of either scan face is unobservable: the prediction decides (0: never)");
 }
 
 }  // namespace swslam::tracking

@@ -29,9 +29,9 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   /** Along a weak direction the prediction decides, with the variance of its recent errors
    * (false: weak directions are only reported; doc/tracking.md says why that is the default) */
   bool ambiguity_take_prior = false;
-  /** A weak direction that fewer than this many of the keyframe's rays face (a single wall's
-   * line) is unobservable: the prediction decides along it even with ambiguity_take_prior
-   * off (0: never; tracking/ambiguity.h) */
+  /** A direction of a match that fewer than this many rays of the keyframe or of the scan
+   * face (a single wall's line) is unobservable: the prediction decides along it even with
+   * ambiguity_take_prior off (0: never; tracking/ambiguity.h) */
   int unobservable_min_rays = 3;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
