@@ -6,6 +6,8 @@
 #include <mrpt/system/CTimeLogger.h>
 
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace swslam::system
 {
@@ -122,9 +124,14 @@ graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph
 {
   if (params.kernel_schedule != graph::KernelSchedule::Fixed)
     return graph::optimizeFull(graph, params);
-  graph::PoseGraph second = graph;
+  // The starting poses, for the second start: the graph itself is copied only when it runs
+  // (an optimization changes nothing else of it).
+  std::vector<std::pair<graph::PoseGraph::TNodeID, mrpt::poses::CPose2D>> start;
+  for (const auto id : graph.nodeIds()) start.emplace_back(id, graph.pose(id));
   graph::OptimizationReport report = graph::optimizeFull(graph, params);
   if (report.switched_off.empty()) return report;
+  graph::PoseGraph second = graph;
+  for (const auto& [id, pose] : start) second.setPose(id, pose);
   graph::GraphOptimizerParams gnc = params;
   gnc.kernel_schedule = graph::KernelSchedule::Gnc;
   const graph::OptimizationReport second_report = graph::optimizeFull(second, gnc);
