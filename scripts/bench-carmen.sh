@@ -2,8 +2,11 @@
 # The corrected CARMEN logs, laser only, with config/default.ini (no per-dataset tuning): each
 # log's ATE against its reference poses, graph size, and the scans tracked by fallback and the
 # ambiguous ones (doc/tracking.md). Needs a built tree (scripts/build.sh).
+# Then the same logs played backwards in time (each log's FLASER lines in reverse order, their
+# timestamps mirrored): the same scans, met in another order, so tracking takes other decisions;
+# a check that the first table is not one lucky sequence of them.
 # Usage: scripts/bench-carmen.sh [CARMEN_DIR] [OUT_DIR]   (defaults ../shared/datasets,
-# out/bench-carmen); swslam's outputs go to OUT_DIR/<log>/.
+# out/bench-carmen); swslam's outputs go to OUT_DIR/<log>/ and OUT_DIR/<log>-reversed/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 carmen_dir=${1:-../shared/datasets}
@@ -12,18 +15,41 @@ bin=build/apps
 cfg=config/default.ini
 mkdir -p "$out"
 field() { grep -F "| $1" "$2" | head -1 | awk -F'|' '{print $3}' | sed 's/^ *//; s/ *$//'; }
-printf "%-20s %-10s %-7s %-24s %-9s %-9s\n" log ATE nodes "constraints (loops)" fallback ambiguous
-for log in "$carmen_dir"/*-corrected.log.gz; do
-  [[ -f $log ]] || continue
-  name=$(basename "$log" -corrected.log.gz)
+# One log: convert (laser only, for the reference poses), run, print its row.
+run() {  # name carmen-log
+  local name=$1 log=$2
   rm -rf "${out:?}/$name"  # no stale results
   "$bin/swslam-carmen2rawlog" -q -w --laser-only --repair-timestamps -i "$log" -o "$out/$name.rawlog" \
     --ground-truth "$out/$name.gt.tum" > /dev/null 2>&1
   "$bin/swslam" -c $cfg -i "$log" -g "$out/$name.gt.tum" -o "$out/$name" -d -q --no-odometry \
     --no-render > /dev/null 2>&1 || true
-  s=$out/$name/summary.md
-  if [[ ! -f $s ]]; then echo "$name: swslam failed (see: $bin/swslam -c $cfg -i $log -o $out/$name -d --no-odometry)"; continue; fi
-  printf "%-20s %-10s %-7s %-24s %-9s %-9s\n" "$name" "$(field 'ATE (rmse)' "$s")" \
+  local s=$out/$name/summary.md
+  if [[ ! -f $s ]]; then echo "$name: swslam failed (see: $bin/swslam -c $cfg -i $log -o $out/$name -d --no-odometry)"; return; fi
+  printf "%-28s %-10s %-7s %-24s %-9s %-9s\n" "$name" "$(field 'ATE (rmse)' "$s")" \
     "$(field 'Number of graph nodes' "$s")" "$(field 'Number of graph constraints' "$s")" \
     "$(field 'Scans tracked by fallback' "$s")" "$(field 'Ambiguous scans' "$s")"
+}
+# A log played backwards: its FLASER lines in reverse order, each timestamp t mirrored to
+# first + last - t (so they increase again).
+reversed() {  # carmen-log out.log
+  zcat -f "$1" | awk '$1 == "FLASER"' | awk '
+    { line[NR] = $0; t = $(NF - 2) + 0; if (NR == 1 || t < lo) lo = t; if (NR == 1 || t > hi) hi = t }
+    END {
+      for (k = NR; k >= 1; k--) {
+        $0 = line[k]; t = sprintf("%.6f", lo + hi - $(NF - 2)); $(NF - 2) = t; $NF = t; print
+      }
+    }' > "$2"
+}
+printf "%-28s %-10s %-7s %-24s %-9s %-9s\n" log ATE nodes "constraints (loops)" fallback ambiguous
+logs=("$carmen_dir"/*-corrected.log.gz)
+for log in "${logs[@]}"; do
+  [[ -f $log ]] || continue
+  run "$(basename "$log" -corrected.log.gz)" "$log"
+done
+echo "# played backwards"
+for log in "${logs[@]}"; do
+  [[ -f $log ]] || continue
+  name=$(basename "$log" -corrected.log.gz)-reversed
+  reversed "$log" "$out/$name.log"
+  run "$name" "$out/$name.log"
 done
