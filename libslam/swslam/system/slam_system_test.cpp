@@ -441,6 +441,7 @@ TEST(SlamSystem, AModuleThatFailsInDeterministicModeStopsThePipelineAsInThreaded
   // failure is the map's (not an exception out of feed()), and what came before is kept.
   auto params = defaultParams();
   params.system.max_odometry_speed = 0;  // no check: let the jump reach the modules
+  params.tracking.unmatched_scans_skipped = 0;  // the unmatched scan is a node at once
   SlamSystem slam(params, RunMode::Deterministic);
   test::World world = test::roomWorld();
   std::mt19937 rng(5);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 namespace swslam::tracking
 {
@@ -87,6 +88,17 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
   const correlative::SearchedMatch s = correlative::searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_,
                                          steady_.costPerM2(correlative_));
   step.searched = true;
+  if (s.match.ok() && s.match.inliers < tracking_.searched_min_inlier_fraction * s.match.cur_valid_rays)
+  {
+    // Neither the prediction nor the search explains the scan: an odd scan (someone in front
+    // of the sensor) or surroundings the keyframes never saw. It is unmatched rather than a
+    // confident wrong pose: the prediction carries it.
+    plicp::MatchResult unmatched = s.match;
+    unmatched.status = plicp::MatchStatus::TooFewCorrespondences;
+    unmatched.message = "the search's best match has " + std::to_string(s.match.inliers) + " inliers of " +
+                        std::to_string(s.match.cur_valid_rays) + " valid rays (searched_min_inlier_fraction)";
+    return unmatched;
+  }
   if (s.replaced) step.source = TrackingSource::Searched;
   if (s.match.ok())
     if (const auto d = secondPeakOffset(scan, guess, s.match))
@@ -312,7 +324,12 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   step.keyframe = last.id;
   step.relative = rel;
   step.pose = last.pose + rel;
+  const bool unmatched = !step.match.ok();
+  unmatched_in_a_row_ = unmatched ? unmatched_in_a_row_ + 1 : 0;
   if (!pastKeyframeThreshold(rel)) return step;
+  // A node needs a match, unless the scans have gone unmatched for longer than one odd scan
+  // explains (open water, a blind sensor): then the prediction makes nodes with weak edges.
+  if (unmatched && unmatched_in_a_row_ <= static_cast<size_t>(tracking_.unmatched_scans_skipped)) return step;
 
   // A new node: the consecutive edge from the match (or, without one, a weak prior that says
   // so), then dense edges to every other node within the radius, nearest first.

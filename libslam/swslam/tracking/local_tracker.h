@@ -132,6 +132,7 @@ class LocalTracker
   mrpt::Clock::time_point last_time_;  ///< the last scan's timestamp
   double last_interval_ = 0;           ///< [s] between the last two scans (0: unknown)
   size_t confirmed_in_a_row_ = 0;      ///< scans in a row whose match confirmed the prediction
+  size_t unmatched_in_a_row_ = 0;      ///< scans in a row without a match (tracked by the prediction)
   SteadyMotion steady_;  ///< the recent motions, for the search's steady-motion prior
 };
 

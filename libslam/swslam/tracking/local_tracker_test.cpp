@@ -477,3 +477,58 @@ TEST(LocalTracker, ARoomIsNotAmbiguous)
   EXPECT_EQ(r.ambiguous_scans, 0);
   EXPECT_LT(r.min_edge_x_variance, 0.01);
 }
+
+TEST(LocalTracker, AScanThatMatchesNothingBecomesNoNode)
+{
+  // Scan 40 sees other surroundings but for a 20 deg sector (a glitch of the sensor, say): the
+  // search's best match explains under a tenth of its rays.
+  const auto world = test::clutteredWorld(5), elsewhere = test::roomWorld();
+  const auto path = sCurve(80);
+  const size_t odd = 40;
+  auto run = [&](const TrackingParams& tp) {
+    std::mt19937 rng(6);
+    correlative::CorrelativeParams cp;
+    cp.trust_prediction_after = 0;  // always search after a poor match, even on a proven prediction
+    LocalTracker tracker(tp, plicp::PlicpParams(), cp);
+    std::vector<TrackingStep> steps;
+    for (size_t k = 0; k < path.size(); k++)
+    {
+      auto obs = scanAt(world, path[k], CPose2D(), 0.05 * k, rng);
+      if (k == odd)
+      {
+        const auto other = scanAt(elsewhere, CPose2D(), CPose2D(), 0.05 * k, rng);
+        for (size_t i = 0; i < obs.getScanSize(); i++)
+          if (i < 250 || i >= 290)
+          {
+            obs.setScanRange(i, other.getScanRange(i));
+            obs.setScanRangeValidity(i, other.getScanRangeValidity(i));
+          }
+      }
+      steps.push_back(tracker.process(obs));
+    }
+    return steps;
+  };
+  TrackingParams tp;
+  tp.keyframe_translation = 0.05;  // every scan is past the keyframe threshold
+  const auto steps = run(tp);
+  EXPECT_EQ(steps[odd].source, TrackingSource::ConstantMotion);
+  EXPECT_NE(steps[odd].match.message.find("searched_min_inlier_fraction"), std::string::npos) << steps[odd].match.message;
+  EXPECT_FALSE(steps[odd].new_keyframe);
+  for (size_t k = 1; k < path.size(); k++)
+  {
+    const CPose2D expected = (-path[0]) + path[k];
+    EXPECT_LT((steps[k].pose.translation() - expected.translation()).norm(), 0.1 + 0.002 * k) << "scan " << k;
+    if (k == odd) continue;
+    EXPECT_TRUE(steps[k].new_keyframe) << "scan " << k;
+    for (const auto& e : steps[k].edges) EXPECT_NE(e.kind, graph::EdgeKind::OdometryPrior) << "scan " << k;
+  }
+  // The scan after it is matched against the keyframe before it, across both intervals.
+  EXPECT_EQ(steps[odd + 1].keyframe, steps[odd - 1].keyframe + 1);
+
+  // Without the two rules, the search's best match becomes a node.
+  tp.searched_min_inlier_fraction = 0;
+  tp.unmatched_scans_skipped = 0;
+  const auto before = run(tp);
+  EXPECT_NE(before[odd].source, TrackingSource::ConstantMotion);
+  EXPECT_TRUE(before[odd].new_keyframe);
+}

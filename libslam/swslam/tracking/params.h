@@ -33,6 +33,14 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
    * face (a single wall's line) is unobservable: the prediction decides along it even with
    * ambiguity_take_prior off (0: never; tracking/ambiguity.h) */
   int unobservable_min_rays = 3;
+  /** A match chosen after the correlative search (the prediction failed) counts only if at
+   * least this fraction of the scan's valid rays are its inliers; else the scan is unmatched
+   * and the prediction carries it (0: any match counts). */
+  double searched_min_inlier_fraction = 0.1;
+  /** An unmatched scan past the keyframe threshold becomes no node while at most this many
+   * scans in a row were unmatched: the next scan is matched against the last keyframe again,
+   * and an odd scan (someone in front of the sensor) never joins the graph (0: always a node). */
+  int unmatched_scans_skipped = 2;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
