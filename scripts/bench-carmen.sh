@@ -4,9 +4,12 @@
 # ambiguous ones (doc/tracking.md). Needs a built tree (scripts/build.sh).
 # Then the same logs played backwards in time (each log's FLASER lines in reverse order, their
 # timestamps mirrored): the same scans, met in another order, so tracking takes other decisions;
-# a check that the first table is not one lucky sequence of them.
+# a check that the first table is not one lucky sequence of them. Last, each log started a
+# quarter, half and three quarters of the way through (the scans before dropped): how a run
+# starts while moving, without a motion to predict from.
 # Usage: scripts/bench-carmen.sh [CARMEN_DIR] [OUT_DIR]   (defaults ../shared/datasets,
-# out/bench-carmen); swslam's outputs go to OUT_DIR/<log>/ and OUT_DIR/<log>-reversed/.
+# out/bench-carmen); swslam's outputs go to OUT_DIR/<log>/, OUT_DIR/<log>-reversed/ and
+# OUT_DIR/<log>-from-<scan>/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 carmen_dir=${1:-../shared/datasets}
@@ -40,6 +43,10 @@ reversed() {  # carmen-log out.log
       }
     }' > "$2"
 }
+# A log started at its FLASER line `from` (0-based): the lines before dropped.
+started() {  # carmen-log from out.log
+  zcat -f "$1" | awk -v from="$2" '$1 == "FLASER" && n++ >= from' > "$3"
+}
 printf "%-28s %-10s %-7s %-24s %-9s %-9s\n" log ATE nodes "constraints (loops)" fallback ambiguous
 logs=("$carmen_dir"/*-corrected.log.gz)
 for log in "${logs[@]}"; do
@@ -52,4 +59,15 @@ for log in "${logs[@]}"; do
   name=$(basename "$log" -corrected.log.gz)-reversed
   reversed "$log" "$out/$name.log"
   run "$name" "$out/$name.log"
+done
+echo "# started part-way"
+for log in "${logs[@]}"; do
+  [[ -f $log ]] || continue
+  scans=$(zcat -f "$log" | awk '$1 == "FLASER"' | wc -l)
+  for quarter in 1 2 3; do
+    from=$((scans * quarter / 4))
+    name=$(basename "$log" -corrected.log.gz)-from-$from
+    started "$log" "$from" "$out/$name.log"
+    run "$name" "$out/$name.log"
+  done
 done
