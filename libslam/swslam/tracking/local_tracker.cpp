@@ -63,7 +63,8 @@ std::vector<correlative::Ray> LocalTracker::submapRays() const
   return out;
 }
 
-plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose2D& guess, TrackingStep& step)
+plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose2D& guess, bool measured_prediction,
+                                           TrackingStep& step)
 {
   const Keyframe& last = keyframes_.back();
   plicp::MatchResult m = matchReference(scan, guess);
@@ -77,7 +78,12 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
                       confirmed_in_a_row_ >= static_cast<size_t>(correlative_.trust_prediction_after);
   if (why == correlative::SearchTrigger::None) confirmed_in_a_row_++;
   // The count goes on through such scans: a door passes by over several of them.
-  if (why == correlative::SearchTrigger::None || (why == correlative::SearchTrigger::LowOverlap && proven)) return m;
+  // A prediction that no matched motion or odometry backs (a run's first match: "no motion")
+  // is a guess, not a measurement. Along a corridor PLICP keeps it at any speed, so the
+  // search decides.
+  const bool guessed = tracking_.search_first_match && !measured_prediction;
+  if (!guessed && (why == correlative::SearchTrigger::None || (why == correlative::SearchTrigger::LowOverlap && proven)))
+    return m;
   confirmed_in_a_row_ = 0;
   if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
   {
@@ -296,7 +302,8 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   const CPose2D predicted = relative_ + motion;
   const auto t0 = std::chrono::steady_clock::now();
   step.source = TrackingSource::Match;
-  step.match = matchLast(scan, geometry::sensorMotion(last.sensor_pose, predicted), step);
+  step.match = matchLast(scan, geometry::sensorMotion(last.sensor_pose, predicted),
+                         odometry_increment.has_value() || motion_matched_, step);
   step.match_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CPose2D rel = predicted;
   // Where the match is ambiguous, the prediction decides, with the variance its recent errors
@@ -318,6 +325,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   last_motion_ = rel - relative_;
+  motion_matched_ = motion_matched_ || step.match.ok();
   // The error of the prediction this scan used.
   steady_.add(raw.ok() ? geometry::vehicleMotion(last.sensor_pose, raw.pose) - relative_ : last_motion_, motion);
   relative_ = rel;

@@ -104,7 +104,10 @@ class LocalTracker
                                                   const plicp::MatchResult& m) const;
   /** The match of `scan` from `guess` (the last keyframe's sensor frame) against the reference
    * (matchReference()), re-aligned by the correlative search when its prediction failed. */
-  plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, TrackingStep& step);
+  /** `measured_prediction`: the guess comes from odometry or from a motion matched before; a
+   * first match without either is searched whatever it says (search_first_match). */
+  plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, bool measured_prediction,
+                               TrackingStep& step);
   /** The match of `scan` from `guess`, both in the last keyframe's sensor frame, against the
    * reference tracking uses: the local map's virtual scan seen from the guess
    * (local_map_keyframes > 0), or the last keyframe's scan. */
@@ -133,6 +136,7 @@ class LocalTracker
   double last_interval_ = 0;           ///< [s] between the last two scans (0: unknown)
   size_t confirmed_in_a_row_ = 0;      ///< scans in a row whose match confirmed the prediction
   size_t unmatched_in_a_row_ = 0;      ///< scans in a row without a match (tracked by the prediction)
+  bool motion_matched_ = false;        ///< some scan's motion was matched: the prediction is measured
   SteadyMotion steady_;  ///< the recent motions, for the search's steady-motion prior
 };
 

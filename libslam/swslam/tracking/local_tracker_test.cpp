@@ -532,3 +532,32 @@ TEST(LocalTracker, AScanThatMatchesNothingBecomesNoNode)
   EXPECT_NE(before[odd].source, TrackingSource::ConstantMotion);
   EXPECT_TRUE(before[odd].new_keyframe);
 }
+
+TEST(LocalTracker, TheFirstMatchIsSearchedAlongACorridor)
+{
+  // A run starts in a corridor at 1 m per scan. The first prediction, no motion, is a guess:
+  // PLICP keeps it (the walls agree at any shift), the search finds the end wall's shift.
+  test::World world = test::corridorWorld();
+  world.segments.push_back({6, -1, 6, 1});
+  auto firstSteps = [&](const TrackingParams& tp) {
+    std::mt19937 rng(8);
+    LocalTracker tracker(tp, plicp::PlicpParams());
+    std::vector<TrackingStep> steps;
+    for (int k = 0; k < 4; k++)
+    {
+      auto obs = test::simulateObservation(world, CPose2D(1.0 * k, 0, 0), 181, M_PI, 8, 0.01, rng);
+      obs.timestamp = mrpt::Clock::fromDouble(1000 + 0.1 * k);
+      steps.push_back(tracker.process(obs));
+    }
+    return steps;
+  };
+  const auto steps = firstSteps(TrackingParams());
+  EXPECT_TRUE(steps[1].searched);
+  for (int k = 1; k < 4; k++) EXPECT_NEAR(steps[k].pose.x(), 1.0 * k, 0.05) << "scan " << k;
+
+  TrackingParams off;
+  off.search_first_match = false;
+  const auto unsearched = firstSteps(off);
+  EXPECT_FALSE(unsearched[1].searched);
+  EXPECT_LT(unsearched[1].pose.x(), 0.5) << "PLICP keeps the guess along the corridor";
+}

@@ -32,6 +32,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   MRPT_LOAD_CONFIG_VAR_CS(unobservable_min_rays, int);
   MRPT_LOAD_CONFIG_VAR_CS(searched_min_inlier_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(unmatched_scans_skipped, int);
+  MRPT_LOAD_CONFIG_VAR_CS(search_first_match, bool);
   auto require = [&](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
   };
@@ -73,6 +74,7 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a match direction fewer rays of either scan face is unobservable: the prediction decides (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(searched_min_inlier_fraction, "a match chosen after the search counts only with this fraction of the valid rays as inliers (0: any)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(search_first_match, "the first match of a run without odometry is always searched (its prediction is a guess)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(unmatched_scans_skipped, "an unmatched scan past the keyframe threshold is no node while at most this many in a row were unmatched (0: always a node)");
 }
 

@@ -41,6 +41,9 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
    * scans in a row were unmatched: the next scan is matched against the last keyframe again,
    * and an odd scan (someone in front of the sensor) never joins the graph (0: always a node). */
   int unmatched_scans_skipped = 2;
+  /** The first match of a run without odometry (its prediction, no motion, is a guess) is
+   * always followed by the correlative search, whatever it says. */
+  bool search_first_match = true;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
