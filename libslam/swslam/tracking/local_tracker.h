@@ -103,9 +103,10 @@ class LocalTracker
   std::optional<Eigen::Vector3d> secondPeakOffset(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess,
                                                   const plicp::MatchResult& m) const;
   /** The match of `scan` from `guess` (the last keyframe's sensor frame) against the reference
-   * (matchReference()), re-aligned by the correlative search when its prediction failed. */
-  /** `measured_prediction`: the guess comes from odometry or from a motion matched before; a
-   * first match without either is searched whatever it says (search_first_match). */
+   * (matchReference()), re-aligned by the correlative search when its prediction failed, or
+   * when `measured_prediction` is false (the guess comes neither from odometry nor from a
+   * motion matched before) and search_first_match is on. A match chosen after a search with
+   * under searched_min_inlier_fraction of the scan's rays as inliers is returned failed. */
   plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, bool measured_prediction,
                                TrackingStep& step);
   /** The match of `scan` from `guess`, both in the last keyframe's sensor frame, against the
