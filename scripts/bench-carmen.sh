@@ -35,10 +35,10 @@ run() {  # name carmen-log
 # A log played backwards: its FLASER lines in reverse order, each timestamp t mirrored to
 # first + last - t (so they increase again).
 reversed() {  # carmen-log out.log
-  zcat -f "$1" | awk '$1 == "FLASER"' | awk '
-    { line[NR] = $0; t = $(NF - 2) + 0; if (NR == 1 || t < lo) lo = t; if (NR == 1 || t > hi) hi = t }
+  zcat -f "$1" | awk '
+    $1 == "FLASER" { line[++n] = $0; t = $(NF - 2) + 0; if (n == 1 || t < lo) lo = t; if (n == 1 || t > hi) hi = t }
     END {
-      for (k = NR; k >= 1; k--) {
+      for (k = n; k >= 1; k--) {
         $0 = line[k]; t = sprintf("%.6f", lo + hi - $(NF - 2)); $(NF - 2) = t; $NF = t; print
       }
     }' > "$2"
