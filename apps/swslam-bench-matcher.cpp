@@ -14,7 +14,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<size_t> stride("s", "stride", "Pair scans k and k+K", false, 1, "K", cmd);
   TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp] and [correlative] sections)", false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> only("m", "method", "Run only this matcher (plicp, plicp+search, cicp-classic, cicp-lm)", false, "", "NAME", cmd);
-  TCLAP::SwitchArg floor_arg("f", "floor", "Also time the work of any full-resolution PLICP match before its first step (scan conversion, reference index, one search)", cmd);
+  TCLAP::SwitchArg floor_arg("f", "floor", "Also time the work of any full-resolution PLICP match before its first step (scan conversion, reference index, one search), and the parts of a pair that plicp+search searches from identity (PLICP, the search's grid, branch and bound)", cmd);
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
@@ -35,7 +35,11 @@ int main(int argc, char** argv)
     for (const auto& row : swslam::bench::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search))
       std::cout << swslam::bench::formatRow(row) << std::endl;
     if (floor_arg.getValue())
+    {
       std::cout << swslam::bench::formatFloor(swslam::bench::plicpFloor(data, stride.getValue(), params)) << std::endl;
+      std::cout << swslam::bench::formatSearchFloor(swslam::bench::searchFloor(data, stride.getValue(), params, search))
+                << std::endl;
+    }
     return 0;
   }
   catch (const std::exception& e)

@@ -1,5 +1,6 @@
 #include <swslam/bench/matcher.h>
 
+#include <swslam/correlative/search.h>
 #include <swslam/correlative/searched_match.h>
 #include <swslam/geometry/sensor_frame.h>
 #include <swslam/io/rawlog_reader.h>
@@ -193,6 +194,53 @@ std::string formatFloor(const PlicpFloor& f)
                 "search_us=%.1f",
                 "plicp-floor", "reference", f.pairs, f.total_us, f.conversion_us, f.index_us,
                 f.search_us);
+  return buf;
+}
+
+SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
+                        const correlative::CorrelativeParams& search_params)
+{
+  SearchFloor f;
+  std::vector<double> first, grid, bnb, total;
+  for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+  {
+    const CObservation2DRangeScan& a = *data.scans[k];
+    const CPose2D guess = geometry::sensorMotion(CPose2D(a.sensorPose), CPose2D());
+    f.pairs++;
+    mrpt::system::CTicTac timer;
+    const plicp::ReferenceScan ref(sensor::scanFromObservation(a), plicp_params);
+    const sensor::Scan cur = sensor::scanFromObservation(*data.scans[k + stride]);
+    const plicp::MatchResult m = plicp::matchScans(ref, cur, guess, plicp_params);
+    const double t_first = timer.Tac();
+    if (!correlative::predictionFailed(m, guess, search_params)) continue;
+    f.searched++;
+    timer.Tic();
+    const correlative::ScorePyramid pyramid =
+        correlative::searchPyramid(correlative::scanRays(ref.scan, search_params.max_range), search_params);
+    const double t_grid = timer.Tac();
+    timer.Tic();
+    correlative::searchBranchAndBound(
+        pyramid, correlative::thinPoints(cur.points, search_params.resolution, search_params.max_range),
+        correlative::searchWindow(search_params, guess), search_params.min_score);
+    const double t_bnb = timer.Tac();
+    first.push_back(t_first * 1e6);
+    grid.push_back(t_grid * 1e6);
+    bnb.push_back(t_bnb * 1e6);
+    total.push_back((t_first + t_grid + t_bnb) * 1e6);
+  }
+  f.plicp_us = quantile(first, 0.5);
+  f.grid_us = quantile(grid, 0.5);
+  f.bnb_us = quantile(bnb, 0.5);
+  f.total_us = quantile(total, 0.5);
+  return f;
+}
+
+std::string formatSearchFloor(const SearchFloor& f)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof(buf),
+                "%-13s init=%-9s pairs=%zu searched=%zu median_us=%.1f plicp_us=%.1f grid_us=%.1f bnb_us=%.1f",
+                "search-floor", "identity", f.pairs, f.searched, f.total_us, f.plicp_us, f.grid_us, f.bnb_us);
   return buf;
 }
 

@@ -48,6 +48,24 @@ PlicpFloor plicpFloor(const io::ScansWithTruth& data, size_t stride, const plicp
 /** "plicp-floor init=reference pairs=... median_us=... conversion_us=... index_us=... search_us=...". */
 std::string formatFloor(const PlicpFloor& floor);
 
+/** What a pair that `plicp+search` searches costs at least, on the pairs of
+ * benchmarkMatchers() from identity (no prediction): PLICP from identity (both scans converted,
+ * the reference index built, the match), the search's grid and pyramid built from the reference
+ * scan, and the branch-and-bound search of the window around identity. The PLICP match from
+ * the search's pose that follows is not counted. `searched` counts the pairs whose first match
+ * says the guess was poor (predictionFailed()); the times are medians over those pairs, and
+ * `total_us` the median of each pair's sum of the three. */
+struct SearchFloor
+{
+  size_t pairs = 0, searched = 0;
+  double plicp_us = 0, grid_us = 0, bnb_us = 0, total_us = 0;
+};
+SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
+                        const correlative::CorrelativeParams& search_params);
+
+/** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...". */
+std::string formatSearchFloor(const SearchFloor& floor);
+
 /** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
 std::string formatRow(const MatcherRow& row);
 

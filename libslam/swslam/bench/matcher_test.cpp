@@ -68,3 +68,31 @@ TEST(MatcherBenchmark, FloorTimesEachPartAndTheirSum)
   EXPECT_NE(swslam::bench::formatFloor(f).find("plicp-floor   init=reference pairs=5 median_us="),
             std::string::npos);
 }
+
+TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
+{
+  // Steps of 0.2 m and 2 deg: from identity PLICP moves every guess by more than the search's
+  // trigger (0.1 m), so every pair is searched.
+  const auto data = roomWalk(6);
+  const swslam::bench::SearchFloor f =
+      swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), swslam::correlative::CorrelativeParams());
+  EXPECT_EQ(f.pairs, 5u);
+  EXPECT_EQ(f.searched, 5u);
+  EXPECT_GT(f.plicp_us, 0.0);
+  EXPECT_GT(f.grid_us, 0.0);
+  EXPECT_GT(f.bnb_us, 0.0);
+  EXPECT_GE(f.total_us, f.plicp_us);
+  EXPECT_GE(f.total_us, f.grid_us);
+  EXPECT_GE(f.total_us, f.bnb_us);
+  // A search that never triggers: no pair is searched, and no time is reported.
+  swslam::correlative::CorrelativeParams never;
+  never.trigger_correction_xy = 100;
+  never.trigger_correction_theta = 10;
+  never.trigger_inlier_fraction = 0;
+  const swslam::bench::SearchFloor none = swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never);
+  EXPECT_EQ(none.pairs, 5u);
+  EXPECT_EQ(none.searched, 0u);
+  EXPECT_EQ(none.total_us, 0.0);
+  EXPECT_NE(swslam::bench::formatSearchFloor(f).find("search-floor  init=identity  pairs=5 searched=5 median_us="),
+            std::string::npos);
+}
