@@ -11,7 +11,9 @@ gt^-1 (+) z, in the frame of the reference relative pose. Per kind, the table gi
 those off by more than --max-xy metres (0.1) or --max-theta-deg degrees (2), and the median
 and 90th percentile of both errors. --list prints each edge over a bound (kind, from, to,
 error x, y, theta in degrees, reference length), which shows where a graph goes wrong and
-which edge kinds carry the error (doc/tracking.md).
+which edge kinds carry the error (doc/tracking.md). The last two columns are the median and
+90th percentile of the normalized error sqrt(e^T Omega e), Omega the edge's information: about
+1.5 at the median for edges whose covariances match their errors (three degrees of freedom).
 
 A malformed line is an error naming the file and line. Writes to stdout only. Python 3, no
 other package.
@@ -26,7 +28,8 @@ from planar_poses import InputError, read_poses
 
 
 def read_edges(path):
-    """[(from, to, (x, y, theta), kind)] of the EDGE_SE2 lines of a graph file."""
+    """[(from, to, (x, y, theta), kind, information)] of the EDGE_SE2 lines of a graph file;
+    information as its upper triangle (xx, xy, xt, yy, yt, tt)."""
     out = []
     with open(path) as f:
         for n, line in enumerate(f, 1):
@@ -38,9 +41,12 @@ def read_edges(path):
             try:
                 a, b = int(v[1]), int(v[2])
                 z = tuple(float(x) for x in v[3:6])
+                info = tuple(float(x) for x in v[6:12])
             except (ValueError, IndexError):
-                raise InputError(f"{path}:{n}: expected EDGE_SE2 FROM TO X Y THETA ...")
-            out.append((a, b, z, kind))
+                raise InputError(f"{path}:{n}: expected EDGE_SE2 FROM TO X Y THETA and 6 information values")
+            if len(info) != 6:
+                raise InputError(f"{path}:{n}: expected EDGE_SE2 FROM TO X Y THETA and 6 information values")
+            out.append((a, b, z, kind, info))
     return out
 
 
@@ -86,17 +92,26 @@ def node_truth(keyframes, gt, tolerance=1e-3):
     return out
 
 
+def normalized(e, info):
+    """sqrt(e^T Omega e), Omega given by its upper triangle (xx, xy, xt, yy, yt, tt)."""
+    xx, xy, xt, yy, yt, tt = info
+    q = (xx * e[0] * e[0] + yy * e[1] * e[1] + tt * e[2] * e[2]
+         + 2 * (xy * e[0] * e[1] + xt * e[0] * e[2] + yt * e[1] * e[2]))
+    return math.sqrt(max(q, 0.0))
+
+
 def edge_errors(edges, truth):
-    """[(kind, from, to, (ex, ey, etheta), reference length)] of the edges with both nodes known."""
+    """[(kind, from, to, (ex, ey, etheta), reference length, normalized error)] of the edges with
+    both nodes known."""
     out = []
-    for a, b, z, kind in edges:
+    for a, b, z, kind, info in edges:
         if a >= len(truth) or b >= len(truth):
             raise InputError(f"edge {a} -> {b}: node beyond keyframes.tum ({len(truth)} nodes)")
         if truth[a] is None or truth[b] is None:
             continue
         g = relative(truth[a], truth[b])
         e = relative(g, z)
-        out.append((kind, a, b, e, math.hypot(g[0], g[1])))
+        out.append((kind, a, b, e, math.hypot(g[0], g[1]), normalized(e, info)))
     return out
 
 
@@ -118,16 +133,19 @@ def main(argv):
     max_th = math.radians(args.max_theta_deg)
     bad = lambda e: math.hypot(e[0], e[1]) > args.max_xy or abs(e[2]) > max_th
     print(f"# {sum(t is not None for t in truth)} of {len(truth)} nodes have a reference pose")
-    print("| kind | edges | off | median xy [m] | p90 xy [m] | median theta [deg] | p90 theta [deg] |")
-    print("|---|---|---|---|---|---|---|")
+    print("| kind | edges | off | median xy [m] | p90 xy [m] | median theta [deg] | p90 theta [deg] | "
+          "median normalized | p90 normalized |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for kind in sorted({k for k, *_ in errors}):
         rows = [r for r in errors if r[0] == kind]
         xy = [math.hypot(r[3][0], r[3][1]) for r in rows]
         th = [math.degrees(abs(r[3][2])) for r in rows]
+        chi = [r[5] for r in rows]
         print(f"| {kind} | {len(rows)} | {sum(bad(r[3]) for r in rows)} | {fmt(percentile(xy, 0.5), 3)} | "
-              f"{fmt(percentile(xy, 0.9), 3)} | {fmt(percentile(th, 0.5), 2)} | {fmt(percentile(th, 0.9), 2)} |")
+              f"{fmt(percentile(xy, 0.9), 3)} | {fmt(percentile(th, 0.5), 2)} | {fmt(percentile(th, 0.9), 2)} | "
+              f"{fmt(percentile(chi, 0.5), 2)} | {fmt(percentile(chi, 0.9), 2)} |")
     if args.list:
-        for kind, a, b, e, length in errors:
+        for kind, a, b, e, length, _ in errors:
             if bad(e):
                 print(f"{kind} {a} {b} {fmt(e[0], 3)} {fmt(e[1], 3)} {fmt(math.degrees(e[2]), 2)} {fmt(length, 2)}")
     return 0
