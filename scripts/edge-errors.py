@@ -42,9 +42,9 @@ def read_edges(path):
                 a, b = int(v[1]), int(v[2])
                 z = tuple(float(x) for x in v[3:6])
                 info = tuple(float(x) for x in v[6:12])
+                if len(info) != 6:
+                    raise ValueError("short information")
             except (ValueError, IndexError):
-                raise InputError(f"{path}:{n}: expected EDGE_SE2 FROM TO X Y THETA and 6 information values")
-            if len(info) != 6:
                 raise InputError(f"{path}:{n}: expected EDGE_SE2 FROM TO X Y THETA and 6 information values")
             out.append((a, b, z, kind, info))
     return out
