@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The figures of doc/plicp.md: swslam-bench-matcher on the bundled lake-short dataset
 # (1081 rays over 270 deg) and on every corrected CARMEN log found in ../shared/datasets
-# (or the folder given), converted laser-only with their reference poses; then a summary table
+# (or the folder given), converted laser-only with their reference poses, each with the rows
+# of --floor (plicp-floor, search-floor: doc/plicp.md); then a summary table
 # per log and initial guess (share of pairs under 5 cm, RMSE, median time of plicp,
 # plicp+search and CICP classic).
 # Usage: scripts/bench-matcher.sh [CARMEN_DIR]    (needs a build: scripts/build.sh)
