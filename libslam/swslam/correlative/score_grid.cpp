@@ -88,7 +88,9 @@ ScorePyramid::ScorePyramid(ScoreGrid base, int depth)
       const int16_t* row = &prev[static_cast<size_t>(y) * w];
       int16_t* out = &along_x[static_cast<size_t>(y) * w];
       // A partner outside the grid scores 0 (ScoreGrid::at), which a free cell is below.
-      for (int x = 0; x < w; x++) out[x] = std::max(row[x], x + s < w ? row[x + s] : int16_t{0});
+      const int inner = std::max(0, w - s);
+      for (int x = 0; x < inner; x++) out[x] = std::max(row[x], row[x + s]);
+      for (int x = inner; x < w; x++) out[x] = std::max(row[x], int16_t{0});
     }
     ScoreGrid next = levels.back();
     for (int y = 0; y < ht; y++)

@@ -1,6 +1,8 @@
 #include <swslam/correlative/search.h>
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -50,20 +52,27 @@ class Lattice
       : w_(w), res_(base.resolution), n_(halfCells(w, base.resolution)), angles_(windowAngles(w)),
         norm_(255.0 * points.size())
   {
+    // Every offset searched is within [-n, n] cells on both axes, at every level (the levels
+    // share the base grid's size). Per angle, a point whose cell stays inside the grid for all
+    // of them is summed without bounds checks, one that stays outside is left out (it scores
+    // 0), and only the rest are checked.
     for (double a : angles_)
     {
-      cells_.push_back(rotatedCells(base, points, a, w.centre.head<2>()));
-      // Linear indices and bounding box: a block whose cells all fall inside the grid is summed
-      // without bounds checks (the common case: the grid is padded for the window).
-      Box b;
-      for (const auto& c : cells_.back())
+      Terms t;
+      for (const auto& c : rotatedCells(base, points, a, w.centre.head<2>()))
       {
-        b.lo = b.lo.cwiseMin(c);
-        b.hi = b.hi.cwiseMax(c);
-        b.linear.push_back(c.y() * base.width + c.x());
+        if (c.x() + n_ < 0 || c.y() + n_ < 0 || c.x() - n_ >= base.width || c.y() - n_ >= base.height) continue;
+        if (c.x() - n_ >= 0 && c.y() - n_ >= 0 && c.x() + n_ < base.width && c.y() + n_ < base.height)
+          t.inside.push_back(c.y() * base.width + c.x());
+        else
+          t.border.push_back(c);
       }
-      boxes_.push_back(std::move(b));
+      terms_.push_back(std::move(t));
+      angle_cost_.push_back(w.cost_per_rad * std::abs(std::remainder(a - w.centre.z(), 2 * M_PI)));
     }
+    // The translation cost of a block depends only on its gap from the centre in cells.
+    for (int gi = 0; gi <= n_; gi++)
+      for (int gj = 0; gj <= n_; gj++) gap_cost_.push_back(translationCost(w_, res_ * std::hypot(gi, gj)));
   }
   int n() const { return n_; }
   bool excluded(int i, int j) const
@@ -73,12 +82,11 @@ class Lattice
   int angleCount() const { return static_cast<int>(angles_.size()); }
   int32_t sum(const ScoreGrid& level, int k, int i, int j) const
   {
-    const Box& b = boxes_[k];
-    if (b.lo.x() + i < 0 || b.lo.y() + j < 0 || b.hi.x() + i >= level.width || b.hi.y() + j >= level.height)
-      return sumAt(level, cells_[k], i, j);
-    const int16_t* cells = level.cells.data() + (j * level.width + i);
+    const Terms& t = terms_[k];
+    const int16_t* cells = level.cells.data() + (static_cast<ptrdiff_t>(j) * level.width + i);
     int32_t sum = 0;
-    for (int idx : b.linear) sum += cells[idx];
+    for (int idx : t.inside) sum += cells[idx];
+    for (const auto& c : t.border) sum += level.at(c.x() + i, c.y() + j);
     return sum;
   }
   /** The objective with cell sum `sum` at the best pose of the block of offsets [i0, i1] x
@@ -87,8 +95,7 @@ class Lattice
   double objective(int32_t sum, int k, int i0, int i1, int j0, int j1) const
   {
     auto gap = [](int lo, int hi) { return lo > 0 ? lo : (hi < 0 ? -hi : 0); };
-    return sum / norm_ - w_.cost_per_rad * std::abs(std::remainder(angles_[k] - w_.centre.z(), 2 * M_PI)) -
-           translationCost(w_, res_ * std::hypot(gap(i0, i1), gap(j0, j1)));
+    return sum / norm_ - angle_cost_[k] - gap_cost_[gap(i0, i1) * (n_ + 1) + gap(j0, j1)];
   }
   SearchResult result(int k, int i, int j, int32_t sum, size_t evaluated) const
   {
@@ -106,14 +113,14 @@ class Lattice
   int n_;
   std::vector<double> angles_;
   double norm_;
-  std::vector<std::vector<Eigen::Vector2i>> cells_;
-  struct Box
+  std::vector<double> angle_cost_;  ///< the rotation's cost, per angle
+  std::vector<double> gap_cost_;    ///< the translation's cost, at gap (gi, gj) cells
+  struct Terms
   {
-    Eigen::Vector2i lo = Eigen::Vector2i::Constant(std::numeric_limits<int>::max());
-    Eigen::Vector2i hi = Eigen::Vector2i::Constant(std::numeric_limits<int>::min());
-    std::vector<int> linear;  ///< y * width + x of each point's cell
+    std::vector<int> inside;              ///< y * width + x of the cells always inside the grid
+    std::vector<Eigen::Vector2i> border;  ///< the cells sometimes inside
   };
-  std::vector<Box> boxes_;
+  std::vector<Terms> terms_;  ///< per angle
 };
 
 struct Candidate
@@ -139,14 +146,20 @@ class BranchAndBound
     const int32_t sum = lattice_.sum(pyramid_.levels[h], k, i, j);
     return {k, i, j, sum, lattice_.objective(sum, k, i, std::min(i + side, last), j, std::min(j + side, last))};
   }
-  void descend(std::vector<Candidate>& cands, int h)
+  void descend(Candidate* first, Candidate* last, int h)
   {
-    std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
+    auto before = [](const Candidate& a, const Candidate& b) {
       return a.bound != b.bound ? a.bound > b.bound
                                 : std::tie(a.k, a.i, a.j) < std::tie(b.k, b.i, b.j);
-    });
-    for (const Candidate& c : cands)
+    };
+    if (last - first > 4)
+      std::sort(first, last, before);
+    else  // a block's children: insertion sort, no allocation
+      for (Candidate* it = first + 1; it < last; ++it)
+        for (Candidate* p = it; p > first && before(*p, *(p - 1)); --p) std::swap(*p, *(p - 1));
+    for (const Candidate* it = first; it != last; ++it)
     {
+      const Candidate& c = *it;
       if (best_ && c.bound <= best_->bound) return;  // sorted: nothing later does better
       if (c.bound <= floor_) return;  // nor better than the caller's floor
       if (c.sum < needed_) continue;  // no pose of the block reaches min_score
@@ -157,12 +170,13 @@ class BranchAndBound
         continue;
       }
       const int s = 1 << (h - 1);
-      std::vector<Candidate> children;
+      std::array<Candidate, 4> children;
+      int count = 0;
       for (int di : {0, s})
         for (int dj : {0, s})
           if (c.i + di <= lattice_.n() && c.j + dj <= lattice_.n())
-            children.push_back(bounded(c.k, c.i + di, c.j + dj, h - 1));
-      descend(children, h - 1);
+            children[count++] = bounded(c.k, c.i + di, c.j + dj, h - 1);
+      descend(children.data(), children.data() + count, h - 1);
     }
   }
   std::optional<Candidate> best_;
@@ -225,7 +239,7 @@ std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
   for (int k = 0; k < lattice.angleCount(); k++)
     for (int i = -n; i <= n; i += 1 << top)
       for (int j = -n; j <= n; j += 1 << top) cands.push_back(bnb.bounded(k, i, j, top));
-  bnb.descend(cands, top);
+  bnb.descend(cands.data(), cands.data() + cands.size(), top);
   if (!bnb.best_) return std::nullopt;
   const Candidate& b = *bnb.best_;
   return lattice.result(b.k, b.i, b.j, b.sum, bnb.evaluated_);
