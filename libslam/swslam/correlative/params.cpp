@@ -28,6 +28,8 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   MRPT_LOAD_CONFIG_VAR_CS(max_range, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_score, double);
   MRPT_LOAD_CONFIG_VAR_CS(min_score_gain, double);
+  MRPT_LOAD_CONFIG_VAR_CS(common_points_fraction, double);
+  MRPT_LOAD_CONFIG_VAR_CS(surface_goes_on_ratio, double);
   MRPT_LOAD_CONFIG_VAR_CS(refine_correspondence_dist, double);
   MRPT_LOAD_CONFIG_VAR_CS(steady_prior_cost, double);
   MRPT_LOAD_CONFIG_VAR_CS(steady_sigma_min, double);
@@ -54,6 +56,8 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   require(max_range > 0, "max_range must be > 0");
   require(min_score >= 0 && min_score <= 1, "min_score must be in [0, 1]");
   require(min_score_gain >= 0, "min_score_gain must be >= 0");
+  require(common_points_fraction >= 0 && common_points_fraction <= 1, "common_points_fraction must be in [0, 1]");
+  require(surface_goes_on_ratio >= 0, "surface_goes_on_ratio must be >= 0");
   require(refine_correspondence_dist >= 0, "refine_correspondence_dist must be >= 0");
   require(steady_prior_cost >= 0, "steady_prior_cost must be >= 0");
   require(steady_sigma_min > 0, "steady_sigma_min must be > 0");
@@ -79,6 +83,8 @@ void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_range, "[m] farther points are not used");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_score, "least score of a search result");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_score_gain, "the searched match wins only with this much higher objective");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(common_points_fraction, "compare the two matches on the points that can tell them apart, when at least this fraction can (0: on all)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(surface_goes_on_ratio, "a point unseen at one pose tells nothing when at the other it lies on a surface going on (the cell beyond scores this fraction of its own)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(refine_correspondence_dist, "[m] PLICP radius of the second refinement when the first scored below the search's pose (0: none)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(steady_prior_cost, "steady-motion prior: score lost at one sigma from the prediction (0: none)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(steady_sigma_min, "[m] least sigma: the spread of the recent steps");

@@ -29,6 +29,14 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   double max_range = 30.0;  ///< [m] farther points are left out of the grid and the search
   double min_score = 0.1;   ///< a search result scores at least this (mean cell value, 0..1)
   double min_score_gain = 0.02;  ///< the searched match replaces the first only if its objective is this much higher
+  /** the two matches are compared on the points that can tell them apart (correlative::
+   * commonScores), when at least this fraction of the points can; else on all the points
+   * (0: always on all) */
+  double common_points_fraction = 0.5;
+  /** a point in unseen space at one pose tells nothing against the other pose when there it
+   * lies on a surface that goes on: the cell as far beyond scores at least this fraction of
+   * its own */
+  double surface_goes_on_ratio = 0.25;
   /** [m] when PLICP from the search's pose ends at a lower objective than that pose's, it is
    * run again from it with this correspondence radius (0: never), the better one kept */
   double refine_correspondence_dist = 0.3;

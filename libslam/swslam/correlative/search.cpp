@@ -278,4 +278,34 @@ double scoreAt(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points
   return sumAt(grid, cells, 0, 0) / (255.0 * points.size());
 }
 
+CommonScores commonScores(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+                          const Eigen::Vector3d& a, const Eigen::Vector3d& b, double goes_on_ratio)
+{
+  const auto ca = rotatedCells(grid, points, a.z(), a.head<2>());
+  const auto cb = rotatedCells(grid, points, b.z(), b.head<2>());
+  CommonScores out;
+  int64_t sa = 0, sb = 0;
+  for (size_t k = 0; k < points.size(); k++)
+  {
+    const int va = grid.at(ca[k].x(), ca[k].y()), vb = grid.at(cb[k].x(), cb[k].y());
+    if (va == 0 && vb == 0) continue;
+    if ((va == 0) != (vb == 0))
+    {
+      const Eigen::Vector2i known = va != 0 ? ca[k] : cb[k], unknown = va != 0 ? cb[k] : ca[k];
+      const Eigen::Vector2i beyond = 2 * known - unknown;
+      const int v = va != 0 ? va : vb;
+      if (v > 0 && grid.at(beyond.x(), beyond.y()) >= goes_on_ratio * v) continue;
+    }
+    sa += va;
+    sb += vb;
+    out.points++;
+  }
+  if (out.points > 0)
+  {
+    out.a = sa / (255.0 * out.points);
+    out.b = sb / (255.0 * out.points);
+  }
+  return out;
+}
+
 }  // namespace swslam::correlative

@@ -73,6 +73,22 @@ std::optional<SearchResult> searchBruteForce(
 double scoreAt(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
                const Eigen::Vector3d& pose);
 
+/** Two poses' scores on the points that can tell them apart. A cell is known when it is
+ * non-zero (near a reference hit, or free space); a point in an unknown cell neither supports
+ * nor contradicts a pose. Left out: a point unknown at both poses, and a point unknown at one
+ * pose whose cell at the other lies on a surface that goes on past it, away from the first
+ * cell (the cell as far beyond scores at least goes_on_ratio times as much): a wall that the
+ * reference saw only so far supports a pose that pulls the point onto it no more than it would
+ * the other, had the reference seen farther. A point on a surface that ends there (a post, a
+ * corner) is kept: unknown at one pose, it is evidence for the other. */
+struct CommonScores
+{
+  size_t points = 0;    ///< points compared
+  double a = 0, b = 0;  ///< their mean cell value / 255 at each pose (0 for no points)
+};
+CommonScores commonScores(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+                          const Eigen::Vector3d& a, const Eigen::Vector3d& b, double goes_on_ratio);
+
 /** Pyramid depth needed for a window: the smallest h with 2^h >= 2 half_xy / resolution + 1. */
 int depthForWindow(double half_xy, double resolution);
 

@@ -279,3 +279,94 @@ TEST(CorrelativeSearch, NothingAboveTheMinimumScoreGivesNoResult)
   EXPECT_FALSE(searchBranchAndBound(pyr, {}, w, 0.0).has_value());
   EXPECT_FALSE(searchBruteForce(pyr.levels[0], {{100, 100}}, w, 0.0).has_value());
 }
+
+TEST(CorrelativeSearch, CommonScoresAgreeWithAPerPointVersion)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const auto world = test::clutteredWorld(4);
+  for (int trial = 0; trial < 6; trial++)
+  {
+    const double ratio = trial % 2 ? 0.25 : 2.0;  // 2: no surface goes on
+    const mrpt::poses::CPose2D a(U(rng), U(rng), 0.3 * U(rng));
+    const auto ref = pointsOf(world, mrpt::poses::CPose2D(0, 0, 0), rng);
+    const auto cur = thinPoints(pointsOf(world, a, rng), 0.1, 30);
+    ScoreGrid grid = buildScoreGrid(ref, 0.1, 0.1, 2);
+    std::vector<Ray> rays;
+    for (const auto& p : ref) rays.push_back({Eigen::Vector2d::Zero(), p});
+    markFreeSpace(grid, rays, -255);
+    // The right pose and one 1.5 m and 20 deg off: some points fall in unseen or free cells.
+    const Eigen::Vector3d pa = vec(a), pb = vec(a + mrpt::poses::CPose2D(1.5, -0.5, 0.35));
+    const CommonScores c = commonScores(grid, cur, pa, pb, ratio);
+    // Per point, by each pose's own transform.
+    auto cellAt = [&](const Eigen::Vector3d& q, const Eigen::Vector2d& p) {
+      double gx = 0, gy = 0;
+      mrpt::poses::CPose2D(q.x(), q.y(), q.z()).composePoint(p.x(), p.y(), gx, gy);
+      return grid.cellOf({gx, gy});
+    };
+    size_t n = 0, one_sided = 0, left_out = 0;
+    double sa = 0, sb = 0;
+    for (const auto& p : cur)
+    {
+      const Eigen::Vector2i ka = cellAt(pa, p), kb = cellAt(pb, p);
+      const int va = grid.at(ka.x(), ka.y()), vb = grid.at(kb.x(), kb.y());
+      if (va == 0 && vb == 0) continue;
+      if (va == 0 || vb == 0)
+      {
+        one_sided++;
+        const Eigen::Vector2i known = va ? ka : kb, other = va ? kb : ka, beyond = known + (known - other);
+        const int v = va ? va : vb;
+        if (v > 0 && grid.at(beyond.x(), beyond.y()) >= ratio * v)
+        {
+          left_out++;
+          continue;
+        }
+      }
+      sa += va;
+      sb += vb;
+      n++;
+    }
+    EXPECT_GT(one_sided, 0u) << "trial " << trial;  // the case the function is for
+    if (ratio > 1) EXPECT_EQ(left_out, 0u);
+    ASSERT_EQ(c.points, n) << "trial " << trial;
+    ASSERT_GT(n, 0u);
+    EXPECT_NEAR(c.a, sa / (255.0 * n), 1e-12);
+    EXPECT_NEAR(c.b, sb / (255.0 * n), 1e-12);
+  }
+  // Every point known at both poses: the plain scores.
+  const auto ref = thinPoints(pointsOf(test::roomWorld(), mrpt::poses::CPose2D(0, 0, 0), rng), 0.1, 30);
+  const ScoreGrid grid = buildScoreGrid(ref, 0.1, 0.1, 2);
+  const CommonScores same = commonScores(grid, ref, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.25);
+  EXPECT_EQ(same.points, ref.size());
+  EXPECT_NEAR(same.a, scoreAt(grid, ref, Eigen::Vector3d::Zero()), 1e-12);
+  // No point known at either pose: no points, scores 0.
+  const CommonScores none = commonScores(grid, {{500, 500}}, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.25);
+  EXPECT_EQ(none.points, 0u);
+  EXPECT_EQ(none.a, 0.0);
+  EXPECT_EQ(commonScores(grid, {}, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.25).points, 0u);
+}
+
+TEST(CorrelativeSearch, CommonScoresLeaveOutWhatASurfaceGoingOnWouldSupportAtEitherPose)
+{
+  // A wall seen from x = 0 to 5 m at y = 1 (a hit every 5 cm) and a post at (2, -1); the
+  // second pose is 1 m back along the wall.
+  std::vector<Eigen::Vector2d> ref;
+  for (int k = 0; k <= 100; k++) ref.emplace_back(0.05 * k, 1);
+  ref.emplace_back(2, -1);
+  const ScoreGrid grid = buildScoreGrid(ref, 0.1, 0.1, 2);
+  const Eigen::Vector3d here(0, 0, 0), back(-1, 0, 0);
+  // On the wall near where it was last seen: unseen from the pose 1 m back, and the wall goes
+  // on past it: left out.
+  EXPECT_EQ(commonScores(grid, {{0.2, 1}}, here, back, 0.25).points, 0u);
+  // The post: unseen from the pose 1 m back, and nothing beyond it: kept, for the first pose.
+  const CommonScores post = commonScores(grid, {{2, -1}}, here, back, 0.25);
+  EXPECT_EQ(post.points, 1u);
+  EXPECT_GT(post.a, 0.7);
+  EXPECT_EQ(post.b, 0.0);
+  // Mid-wall, known at both poses: kept, about the same at both.
+  const CommonScores mid = commonScores(grid, {{3, 1}}, here, back, 0.25);
+  EXPECT_EQ(mid.points, 1u);
+  EXPECT_NEAR(mid.a, mid.b, 0.05);
+  // With a ratio above 1 no surface goes on: the wall's point counts too.
+  EXPECT_EQ(commonScores(grid, {{0.2, 1}}, here, back, 2.0).points, 1u);
+}

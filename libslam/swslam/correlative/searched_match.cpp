@@ -63,6 +63,28 @@ bool predictionFailed(const plicp::MatchResult& m, const CPose2D& guess, const C
   return searchTrigger(m, guess, p) != SearchTrigger::None;
 }
 
+MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+                               const SearchWindow& w, const Eigen::Vector3d& first,
+                               const Eigen::Vector3d& searched, double common_points_fraction,
+                               double goes_on_ratio)
+{
+  MatchComparison out;
+  if (common_points_fraction > 0)
+  {
+    const CommonScores c = commonScores(grid, points, first, searched, goes_on_ratio);
+    if (c.points > 0 && c.points >= common_points_fraction * points.size())
+    {
+      out.first = objective(w, c.a, first);
+      out.searched = objective(w, c.b, searched);
+      out.common_points = c.points;
+      return out;
+    }
+  }
+  out.first = objective(w, scoreAt(grid, points, first), first);
+  out.searched = objective(w, scoreAt(grid, points, searched), searched);
+  return out;
+}
+
 SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScorePyramid& pyramid,
                              const sensor::Scan& cur, const CPose2D& guess, const plicp::MatchResult& first,
                              const CorrelativeParams& p, const plicp::PlicpParams& plicp, double cost_per_m2)
@@ -108,7 +130,17 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
       out.searched_objective = local_objective;
     }
   }
-  if (second.ok() && out.searched_objective >= out.first_objective + p.min_score_gain)
+  out.first_compared = out.first_objective;
+  out.searched_compared = out.searched_objective;
+  if (first.ok() && second.ok())
+  {
+    const MatchComparison c = compareMatches(grid, points, w, vec(first.pose), vec(second.pose),
+                                               p.common_points_fraction, p.surface_goes_on_ratio);
+    out.first_compared = c.first;
+    out.searched_compared = c.searched;
+    out.common_points = c.common_points;
+  }
+  if (second.ok() && out.searched_compared >= out.first_compared + p.min_score_gain)
   {
     out.match = second;
     out.replaced = true;

@@ -52,12 +52,33 @@ struct SearchedMatch
   double search_objective = -1e9;  ///< of the search's best pose itself (-1e9: nothing found)
   bool bounded_refinement = false;  ///< PLICP from the search's pose was run again within refine_correspondence_dist
   int searched_iterations = 0;      ///< PLICP iterations run from the search's pose, kept or not
+  /** What the choice compared (compareMatches; the objectives above when a match failed). */
+  double first_compared = 0, searched_compared = 0;
+  size_t common_points = 0;
 };
+
+/** Two poses' objectives (score on the grid less the window's motion prior) as the choice
+ * between a first and a searched match compares them: on the points that can tell them apart
+ * (commonScores, with goes_on_ratio) when at least common_points_fraction of the points are
+ * (and some are), else on all the points (scoreAt). */
+struct MatchComparison
+{
+  double first = 0, searched = 0;
+  size_t common_points = 0;  ///< the points compared on (0: all of them)
+};
+MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+                               const SearchWindow& w, const Eigen::Vector3d& first,
+                               const Eigen::Vector3d& searched, double common_points_fraction,
+                               double goes_on_ratio);
 
 /** Searches the window around `guess` (the current sensor pose in the reference sensor
  * frame, as for matchScans) with the reference's pyramid, runs PLICP from the best pose, and
  * keeps that match only if its objective (score on the grid less the motion prior's cost) is
- * min_score_gain above that of `first` (a failed match has none). If the match from the best
+ * min_score_gain above that of `first` (a failed match has none). The two objectives are
+ * compared on the points that can tell the poses apart (compareMatches): a point the
+ * keyframes never saw around, at one pose, is left out when at the other it lies on a surface
+ * that goes on past it, so the pose that pulls such points onto seen walls gains nothing by
+ * it. If the match from the best
  * pose ends at a lower objective than the best pose's own (PLICP against the keyframe alone
  * left the search's basin), PLICP runs again from the best pose with refine_correspondence_dist
  * as its correspondence radius, and the higher-scoring of the two is the searched match.

@@ -89,7 +89,7 @@ TEST(SearchedMatch, RecoversALargeUnpredictedMotion)
   EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.05);
   EXPECT_NEAR(s.match.pose.y(), motion.y(), 0.05);
   EXPECT_NEAR(std::remainder(s.match.pose.phi() - motion.phi(), 2 * M_PI), 0, 0.01);
-  EXPECT_GE(s.searched_objective, s.first_objective + p.min_score_gain);
+  EXPECT_GE(s.searched_compared, s.first_compared + p.min_score_gain);
   EXPECT_GE(s.searched_iterations, s.match.iterations);
 }
 
@@ -143,4 +143,54 @@ TEST(SearchedMatch, ARefinementThatLeavesTheSearchBasinIsRedoneWithinIt)
   // Here the bounded refinement scores higher, and is kept.
   EXPECT_GT(s.searched_objective, f.searched_objective);
   EXPECT_NE(s.match.pose, f.match.pose);
+}
+
+// A corridor played backwards (the sensor moves away from what it faces): the scan sees wall
+// beside it that the keyframe never saw. Compared on all points, a pose 1 m short pulls those
+// points onto the keyframe's walls and wins, though the walls fix nothing along the corridor;
+// compared on the points that can tell the two apart, the right match (on its prediction) is
+// kept. (LocalTracker.ASingleWallIsWeakAlongItself has the converse: posts that one pose puts
+// in unseen space still count for the other.)
+TEST(SearchedMatch, PointsInUnseenSpaceDoNotChooseBetweenTwoMatches)
+{
+  const auto world = test::corridorWorld();
+  correlative::CorrelativeParams p;  // common_points_fraction 0.5
+  // Within 6 m the walls' hits are dense enough that the grid holds the walls, not the
+  // keyframe's samples of them.
+  p.max_range = 6;
+  // Off the keyframe's line and turned a little, so that no pose lays the scan's rays on the
+  // keyframe's own (which would score higher for that alone).
+  const CPose2D keyframe(0, 0, 0), truth(-1, 0.15, 0.04);  // in the keyframe's frame
+  const Eigen::Vector3d right(truth.x(), truth.y(), truth.phi()), short_by_1m(0, 0.15, 0.04);
+  for (unsigned seed = 1; seed <= 5; seed++)
+  {
+    std::mt19937 rng(seed);
+    auto scan = [&](const CPose2D& pose) {
+      return sensor::scanFromObservation(test::simulateObservation(world, pose, 361, M_PI, 30, 0.01, rng));
+    };
+    const sensor::Scan ref = scan(keyframe);
+    const sensor::Scan cur = scan(truth);
+    const ScorePyramid pyramid = searchPyramid(scanRays(ref, p.max_range), p);
+    const auto points = thinPoints(cur.points, p.resolution, p.max_range);
+    const SearchWindow w = searchWindow(p, truth);  // the prediction is right
+    const ScoreGrid& grid = pyramid.levels[0];
+
+    const MatchComparison all = compareMatches(grid, points, w, right, short_by_1m, 0, p.surface_goes_on_ratio);
+    EXPECT_EQ(all.common_points, 0u);
+    // The bias: the short pose would win.
+    EXPECT_GT(all.searched, all.first + p.min_score_gain) << "seed " << seed;
+
+    const MatchComparison common = compareMatches(grid, points, w, right, short_by_1m, p.common_points_fraction,
+                                                  p.surface_goes_on_ratio);
+    EXPECT_GE(common.common_points, p.common_points_fraction * points.size());
+    EXPECT_LT(common.common_points, points.size());
+    EXPECT_LT(common.searched, common.first + p.min_score_gain) << "seed " << seed;  // the right match stays
+
+    // Too few points in common (a fraction above theirs): compared on all points again.
+    const double above = (common.common_points + 1.0) / points.size();
+    const MatchComparison few = compareMatches(grid, points, w, right, short_by_1m, above, p.surface_goes_on_ratio);
+    EXPECT_EQ(few.common_points, 0u);
+    EXPECT_EQ(few.searched, all.searched);
+    EXPECT_EQ(few.first, all.first);
+  }
 }
