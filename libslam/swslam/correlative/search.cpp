@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <tuple>
 
 namespace swslam::correlative

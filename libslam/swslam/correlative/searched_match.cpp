@@ -130,17 +130,11 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
       out.searched_objective = local_objective;
     }
   }
-  out.first_compared = out.first_objective;
-  out.searched_compared = out.searched_objective;
+  out.compared = {out.first_objective, out.searched_objective, 0};
   if (first.ok() && second.ok())
-  {
-    const MatchComparison c = compareMatches(grid, points, w, vec(first.pose), vec(second.pose),
-                                               p.common_points_fraction, p.surface_goes_on_ratio);
-    out.first_compared = c.first;
-    out.searched_compared = c.searched;
-    out.common_points = c.common_points;
-  }
-  if (second.ok() && out.searched_compared >= out.first_compared + p.min_score_gain)
+    out.compared = compareMatches(grid, points, w, vec(first.pose), vec(second.pose), p.common_points_fraction,
+                                  p.surface_goes_on_ratio);
+  if (second.ok() && out.compared.searched >= out.compared.first + p.min_score_gain)
   {
     out.match = second;
     out.replaced = true;

@@ -44,6 +44,13 @@ SearchTrigger searchTrigger(const plicp::MatchResult& m, const mrpt::poses::CPos
 bool predictionFailed(const plicp::MatchResult& m, const mrpt::poses::CPose2D& guess,
                       const CorrelativeParams& p);
 
+/** The objectives the choice between a first and a searched match compares (compareMatches). */
+struct MatchComparison
+{
+  double first = 0, searched = 0;
+  size_t common_points = 0;  ///< the points compared on (0: all of them)
+};
+
 struct SearchedMatch
 {
   plicp::MatchResult match;      ///< the chosen match
@@ -52,20 +59,13 @@ struct SearchedMatch
   double search_objective = -1e9;  ///< of the search's best pose itself (-1e9: nothing found)
   bool bounded_refinement = false;  ///< PLICP from the search's pose was run again within refine_correspondence_dist
   int searched_iterations = 0;      ///< PLICP iterations run from the search's pose, kept or not
-  /** What the choice compared (compareMatches; the objectives above when a match failed). */
-  double first_compared = 0, searched_compared = 0;
-  size_t common_points = 0;
+  MatchComparison compared;  ///< what the choice compared (the objectives above when a match failed)
 };
 
 /** Two poses' objectives (score on the grid less the window's motion prior) as the choice
  * between a first and a searched match compares them: on the points that can tell them apart
  * (commonScores, with goes_on_ratio) when at least common_points_fraction of the points are
  * (and some are), else on all the points (scoreAt). */
-struct MatchComparison
-{
-  double first = 0, searched = 0;
-  size_t common_points = 0;  ///< the points compared on (0: all of them)
-};
 MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
                                const SearchWindow& w, const Eigen::Vector3d& first,
                                const Eigen::Vector3d& searched, double common_points_fraction,
@@ -78,10 +78,10 @@ MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::V
  * compared on the points that can tell the poses apart (compareMatches): a point the
  * keyframes never saw around, at one pose, is left out when at the other it lies on a surface
  * that goes on past it, so the pose that pulls such points onto seen walls gains nothing by
- * it. If the match from the best
- * pose ends at a lower objective than the best pose's own (PLICP against the keyframe alone
- * left the search's basin), PLICP runs again from the best pose with refine_correspondence_dist
- * as its correspondence radius, and the higher-scoring of the two is the searched match.
+ * it. If the match from the best pose ends at a lower objective than the best pose's own
+ * (PLICP against the keyframe alone left the search's basin), PLICP runs again from the best
+ * pose with refine_correspondence_dist as its correspondence radius, and the higher-scoring
+ * of the two is the searched match.
  * Nothing found, or a best
  * pose in the first match's basin (within 1.5 cells and 1.5 angle steps), keeps `first`
  * without a second match. `cost_per_m2` adds a quadratic translation cost to the window's

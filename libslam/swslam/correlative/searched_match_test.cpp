@@ -89,7 +89,7 @@ TEST(SearchedMatch, RecoversALargeUnpredictedMotion)
   EXPECT_NEAR(s.match.pose.x(), motion.x(), 0.05);
   EXPECT_NEAR(s.match.pose.y(), motion.y(), 0.05);
   EXPECT_NEAR(std::remainder(s.match.pose.phi() - motion.phi(), 2 * M_PI), 0, 0.01);
-  EXPECT_GE(s.searched_compared, s.first_compared + p.min_score_gain);
+  EXPECT_GE(s.compared.searched, s.compared.first + p.min_score_gain);
   EXPECT_GE(s.searched_iterations, s.match.iterations);
 }
 
