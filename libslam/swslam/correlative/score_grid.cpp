@@ -75,35 +75,40 @@ ScorePyramid::ScorePyramid(ScoreGrid base, int depth)
                                 " needs a base grid padded by 2^depth - 1 cells (it has " +
                                 std::to_string(base.pad_cells) + ")");
   levels.push_back(std::move(base));
-  // Level h from level h-1: the window of side 2^h is four windows of side 2^(h-1); the max
-  // is taken along x, then along y.
+  // Level h from level h-1: the window of side 2^h is the four windows of side 2^(h-1) at
+  // offsets 0 and s = 2^(h-1) on each axis. A partner outside the grid scores 0
+  // (ScoreGrid::at), which a free cell is below. Each level is written once, without a copy
+  // of the one below or a buffer between them.
   const int w = levels.front().width, ht = levels.front().height;
+  levels.reserve(static_cast<size_t>(depth) + 1);
   for (int h = 1; h <= depth; h++)
   {
     const int s = 1 << (h - 1);
-    const std::vector<int16_t>& prev = levels.back().cells;
-    std::vector<int16_t> along_x(prev.size());
+    const ScoreGrid& below = levels.back();
+    ScoreGrid next;
+    next.origin = below.origin;
+    next.resolution = below.resolution;
+    next.width = w;
+    next.height = ht;
+    next.pad_cells = below.pad_cells;
+    next.cells.resize(below.cells.size());
+    const int16_t* prev = below.cells.data();
+    const int inner = std::max(0, w - s);
     for (int y = 0; y < ht; y++)
     {
-      const int16_t* row = &prev[static_cast<size_t>(y) * w];
-      int16_t* out = &along_x[static_cast<size_t>(y) * w];
-      // A partner outside the grid scores 0 (ScoreGrid::at), which a free cell is below.
-      const int inner = std::max(0, w - s);
-      for (int x = 0; x < inner; x++) out[x] = std::max(row[x], row[x + s]);
-      for (int x = inner; x < w; x++) out[x] = std::max(row[x], int16_t{0});
-    }
-    ScoreGrid next = levels.back();
-    for (int y = 0; y < ht; y++)
-    {
-      const int16_t* a = &along_x[static_cast<size_t>(y) * w];
-      int16_t* out = &next.cells[static_cast<size_t>(y) * w];
-      if (y + s < ht)
+      const int16_t* a = prev + static_cast<size_t>(y) * w;
+      const int16_t* b = y + s < ht ? a + static_cast<size_t>(s) * w : nullptr;
+      int16_t* out = next.cells.data() + static_cast<size_t>(y) * w;
+      if (b)
       {
-        const int16_t* b = &along_x[static_cast<size_t>(y + s) * w];
-        for (int x = 0; x < w; x++) out[x] = std::max(a[x], b[x]);
+        for (int x = 0; x < inner; x++) out[x] = std::max(std::max(a[x], a[x + s]), std::max(b[x], b[x + s]));
+        for (int x = inner; x < w; x++) out[x] = std::max(std::max(a[x], b[x]), int16_t{0});
       }
       else
-        for (int x = 0; x < w; x++) out[x] = std::max(a[x], int16_t{0});
+      {
+        for (int x = 0; x < inner; x++) out[x] = std::max(std::max(a[x], a[x + s]), int16_t{0});
+        for (int x = inner; x < w; x++) out[x] = std::max(a[x], int16_t{0});
+      }
     }
     levels.push_back(std::move(next));
   }

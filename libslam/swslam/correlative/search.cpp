@@ -14,14 +14,29 @@ namespace
 /** The motion prior's cost of a translation d from the window's centre (increasing in d, so
  * a block's nearest point bounds it). */
 double translationCost(const SearchWindow& w, double d) { return w.cost_per_m * d + w.cost_per_m2 * d * d; }
-/** Cells of the points turned by theta and moved by the window's centre. */
+/** Cells of the points turned by theta and moved by t, into `out` (resized to the points'). */
+void rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts, double theta,
+                  const Eigen::Vector2d& t, std::vector<Eigen::Vector2i>& out)
+{
+  // g.cellOf(R p + t), in a loop without calls or growth that the compiler vectorizes.
+  const double c = std::cos(theta), s = std::sin(theta);
+  const double ox = g.origin.x(), oy = g.origin.y(), r = g.resolution;
+  auto floorOf = [](double v) {
+    const int i = static_cast<int>(v);
+    return i - (v < i);
+  };
+  out.resize(pts.size());
+  for (size_t k = 0; k < pts.size(); k++)
+  {
+    const double x = c * pts[k].x() - s * pts[k].y() + t.x(), y = s * pts[k].x() + c * pts[k].y() + t.y();
+    out[k] = {floorOf((x - ox) / r), floorOf((y - oy) / r)};
+  }
+}
 std::vector<Eigen::Vector2i> rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts,
                                           double theta, const Eigen::Vector2d& t)
 {
-  const double c = std::cos(theta), s = std::sin(theta);
   std::vector<Eigen::Vector2i> out;
-  out.reserve(pts.size());
-  for (const auto& p : pts) out.push_back(g.cellOf({c * p.x() - s * p.y() + t.x(), s * p.x() + c * p.y() + t.y()}));
+  rotatedCells(g, pts, theta, t, out);
   return out;
 }
 
@@ -55,18 +70,23 @@ class Lattice
     // share the base grid's size). Per angle, a point whose cell stays inside the grid for all
     // of them is summed without bounds checks, one that stays outside is left out (it scores
     // 0), and only the rest are checked.
+    // All angles' terms are kept in two arrays, each angle's a range of them.
+    std::vector<Eigen::Vector2i> cells;
     for (double a : angles_)
     {
-      Terms t;
-      for (const auto& c : rotatedCells(base, points, a, w.centre.head<2>()))
+      Terms t{inside_.size(), 0, border_.size(), 0};
+      rotatedCells(base, points, a, w.centre.head<2>(), cells);
+      for (const auto& c : cells)
       {
         if (c.x() + n_ < 0 || c.y() + n_ < 0 || c.x() - n_ >= base.width || c.y() - n_ >= base.height) continue;
         if (c.x() - n_ >= 0 && c.y() - n_ >= 0 && c.x() + n_ < base.width && c.y() + n_ < base.height)
-          t.inside.push_back(c.y() * base.width + c.x());
+          inside_.push_back(c.y() * base.width + c.x());
         else
-          t.border.push_back(c);
+          border_.push_back(c);
       }
-      terms_.push_back(std::move(t));
+      t.inside_end = inside_.size();
+      t.border_end = border_.size();
+      terms_.push_back(t);
       angle_cost_.push_back(w.cost_per_rad * std::abs(std::remainder(a - w.centre.z(), 2 * M_PI)));
     }
     // The translation cost of a block depends only on its gap from the centre in cells.
@@ -84,9 +104,36 @@ class Lattice
     const Terms& t = terms_[k];
     const int16_t* cells = level.cells.data() + (static_cast<ptrdiff_t>(j) * level.width + i);
     int32_t sum = 0;
-    for (int idx : t.inside) sum += cells[idx];
-    for (const auto& c : t.border) sum += level.at(c.x() + i, c.y() + j);
+    for (size_t m = t.inside_begin; m < t.inside_end; m++) sum += cells[inside_[m]];
+    for (size_t m = t.border_begin; m < t.border_end; m++) sum += level.at(border_[m].x() + i, border_[m].y() + j);
     return sum;
+  }
+  /** The sums of the four blocks at offsets (i, j), (i, j + s), (i + s, j) and (i + s, j + s),
+   * in that order, in one pass over the points (all four within [-n, n]). */
+  std::array<int32_t, 4> sums(const ScoreGrid& level, int k, int i, int j, int s) const
+  {
+    const Terms& t = terms_[k];
+    const ptrdiff_t row = level.width, up = s * row;
+    const int16_t* cells = level.cells.data() + (static_cast<ptrdiff_t>(j) * row + i);
+    int32_t a = 0, b = 0, c = 0, d = 0;
+    for (size_t m = t.inside_begin; m < t.inside_end; m++)
+    {
+      const int16_t* p = cells + inside_[m];
+      a += p[0];
+      b += p[up];
+      c += p[s];
+      d += p[up + s];
+    }
+    for (size_t m = t.border_begin; m < t.border_end; m++)
+    {
+      const Eigen::Vector2i& q = border_[m];
+      const int x = q.x() + i, y = q.y() + j;
+      a += level.at(x, y);
+      b += level.at(x, y + s);
+      c += level.at(x + s, y);
+      d += level.at(x + s, y + s);
+    }
+    return {a, b, c, d};
   }
   /** The objective with cell sum `sum` at the best pose of the block of offsets [i0, i1] x
    * [j0, j1] (its point nearest the centre): an upper bound over the block when `sum` bounds
@@ -114,10 +161,11 @@ class Lattice
   double norm_;
   std::vector<double> angle_cost_;  ///< the rotation's cost, per angle
   std::vector<double> gap_cost_;    ///< the translation's cost, at gap (gi, gj) cells
-  struct Terms
+  std::vector<int> inside_;              ///< y * width + x of cells always inside the grid
+  std::vector<Eigen::Vector2i> border_;  ///< cells sometimes inside
+  struct Terms  ///< an angle's ranges of inside_ and border_
   {
-    std::vector<int> inside;              ///< y * width + x of the cells always inside the grid
-    std::vector<Eigen::Vector2i> border;  ///< the cells sometimes inside
+    size_t inside_begin, inside_end, border_begin, border_end;
   };
   std::vector<Terms> terms_;  ///< per angle
 };
@@ -140,9 +188,12 @@ class BranchAndBound
   }
   Candidate bounded(int k, int i, int j, int h)
   {
+    return withSum(k, i, j, h, lattice_.sum(pyramid_.levels[h], k, i, j));
+  }
+  Candidate withSum(int k, int i, int j, int h, int32_t sum)
+  {
     evaluated_++;
     const int last = lattice_.n(), side = (1 << h) - 1;
-    const int32_t sum = lattice_.sum(pyramid_.levels[h], k, i, j);
     return {k, i, j, sum, lattice_.objective(sum, k, i, std::min(i + side, last), j, std::min(j + side, last))};
   }
   void descend(Candidate* first, Candidate* last, int h)
@@ -171,10 +222,18 @@ class BranchAndBound
       const int s = 1 << (h - 1);
       std::array<Candidate, 4> children;
       int count = 0;
-      for (int di : {0, s})
-        for (int dj : {0, s})
-          if (c.i + di <= lattice_.n() && c.j + dj <= lattice_.n())
-            children[count++] = bounded(c.k, c.i + di, c.j + dj, h - 1);
+      if (c.i + s <= lattice_.n() && c.j + s <= lattice_.n())
+      {
+        const auto sums = lattice_.sums(pyramid_.levels[h - 1], c.k, c.i, c.j, s);
+        for (int di : {0, 1})
+          for (int dj : {0, 1})
+            children[count++] = withSum(c.k, c.i + di * s, c.j + dj * s, h - 1, sums[2 * di + dj]);
+      }
+      else
+        for (int di : {0, s})
+          for (int dj : {0, s})
+            if (c.i + di <= lattice_.n() && c.j + dj <= lattice_.n())
+              children[count++] = bounded(c.k, c.i + di, c.j + dj, h - 1);
       descend(children.data(), children.data() + count, h - 1);
     }
   }

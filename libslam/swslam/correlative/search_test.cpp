@@ -280,6 +280,40 @@ TEST(CorrelativeSearch, NothingAboveTheMinimumScoreGivesNoResult)
   EXPECT_FALSE(searchBruteForce(pyr.levels[0], {{100, 100}}, w, 0.0).has_value());
 }
 
+TEST(CorrelativeSearch, ScoreAtAgreesWithAPerPointVersion)
+{
+  // The search's cells of turned points (their own floor) against ScoreGrid::cellOf: a grid of
+  // random values, points inside it, just outside its low edges (where truncating instead of
+  // flooring would land in cell 0) and far outside.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::uniform_int_distribution<int> V(-255, 255);
+  ScoreGrid grid;
+  grid.origin = {-1.05, -0.95};
+  grid.resolution = 0.1;
+  grid.width = 25;
+  grid.height = 18;
+  for (int k = 0; k < grid.width * grid.height; k++) grid.cells.push_back(static_cast<int16_t>(V(rng)));
+  std::vector<Eigen::Vector2d> cur;
+  for (int k = 0; k < 60; k++) cur.emplace_back(1.5 * U(rng), 1.5 * U(rng));
+  for (int trial = 0; trial < 50; trial++)
+  {
+    const Eigen::Vector3d pose = trial == 0 ? Eigen::Vector3d::Zero() : Eigen::Vector3d(U(rng), U(rng), 3 * U(rng));
+    const double c = std::cos(pose.z()), s = std::sin(pose.z());
+    double sum = 0;
+    size_t below_edge = 0;
+    for (const auto& p : cur)
+    {
+      const Eigen::Vector2d q(c * p.x() - s * p.y() + pose.x(), s * p.x() + c * p.y() + pose.y());
+      const Eigen::Vector2i cell = grid.cellOf(q);
+      sum += grid.at(cell.x(), cell.y());
+      below_edge += cell.x() == -1 || cell.y() == -1;
+    }
+    EXPECT_EQ(scoreAt(grid, cur, pose), sum / (255.0 * cur.size())) << "trial " << trial;
+    if (trial == 0) EXPECT_GT(below_edge, 0u);
+  }
+}
+
 TEST(CorrelativeSearch, CommonScoresAgreeWithAPerPointVersion)
 {
   std::mt19937 rng(5);
