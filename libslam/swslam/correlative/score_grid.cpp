@@ -8,7 +8,7 @@
 namespace swslam::correlative
 {
 ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution,
-                         double sigma, int pad_cells)
+                         double sigma, int pad_cells, const std::vector<Eigen::Vector2d>& cover)
 {
   if (!(resolution > 0) || !(sigma > 0) || pad_cells < 0)
     throw std::invalid_argument("buildScoreGrid: resolution and sigma must be > 0, pad_cells >= 0");
@@ -24,10 +24,20 @@ ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double reso
   }
   const double reach = 3 * sigma;
   const int reach_cells = static_cast<int>(std::ceil(reach / resolution));
+  // The cells are laid from the points alone; whole cells are added for `cover`.
   g.origin = lo - Eigen::Vector2d::Constant((reach_cells + pad_cells) * resolution);
-  const Eigen::Vector2i top = g.cellOf(hi);
-  g.width = top.x() + reach_cells + pad_cells + 1;
-  g.height = top.y() + reach_cells + pad_cells + 1;
+  Eigen::Vector2i top = g.cellOf(hi) + Eigen::Vector2i::Constant(reach_cells);
+  Eigen::Vector2i below = Eigen::Vector2i::Zero();
+  for (const auto& p : cover)
+  {
+    if (!p.allFinite()) continue;
+    const Eigen::Vector2i c = g.cellOf(p);
+    below = below.cwiseMax(-c);
+    top = top.cwiseMax(c);
+  }
+  g.origin -= below.cast<double>() * resolution;
+  g.width = top.x() + below.x() + 1;
+  g.height = top.y() + below.y() + 1;
   g.cells.assign(static_cast<size_t>(g.width) * g.height, 0);
   // The max of the points' kernels is the kernel of the nearest point.
   const double inv2s2 = 1 / (2 * sigma * sigma);

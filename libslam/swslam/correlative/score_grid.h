@@ -18,7 +18,7 @@ struct ScoreGrid
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  ///< lower-left corner of cell (0, 0)
   double resolution = 0.1;                           ///< [m] cell side
   int width = 0, height = 0;
-  int pad_cells = 0;           ///< empty cells around the data's reach on every side
+  int pad_cells = 0;           ///< empty cells below the data's reach, on the low x and y sides
   std::vector<int16_t> cells;  ///< row-major, cell (x, y) at y * width + x
 
   /** The cell's value, 0 outside the grid. */
@@ -37,10 +37,11 @@ struct ScoreGrid
 
 /** The grid of `points` with cells of `resolution` and kernel `sigma`: cell value
  * round(255 exp(-d^2 / 2 sigma^2)), d from the cell's centre to the nearest point, and 0
- * beyond 3 sigma. It covers the points' bounding box plus 3 sigma, and `pad_cells` more
- * cells on every side. Empty points give an empty grid. */
+ * beyond 3 sigma. It covers the bounding box of the points and of `cover` (where rays start,
+ * for markFreeSpace) plus 3 sigma, and `pad_cells` more cells on its low sides (x and y),
+ * where the pyramid's windows start (ScorePyramid). Empty points give an empty grid. */
 ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution,
-                         double sigma, int pad_cells = 0);
+                         double sigma, int pad_cells = 0, const std::vector<Eigen::Vector2d>& cover = {});
 
 /** A reference observation: the sensor at `origin` saw a surface at `hit`. */
 struct Ray
@@ -55,9 +56,10 @@ struct Ray
 void markFreeSpace(ScoreGrid& grid, const std::vector<Ray>& rays, int free_value);
 
 /** Level h of the pyramid has the grid's frame and size; its cell (x, y) is the largest
- * value of level 0 over [x, x + 2^h) x [y, y + 2^h). The base grid needs 2^depth - 1 cells of
- * padding (buildScoreGrid's pad_cells) so that no window reaching data starts outside it;
- * with less, the constructor throws std::invalid_argument. */
+ * value of level 0 over [x, x + 2^h) x [y, y + 2^h) (0 outside the grid). The base grid needs
+ * 2^depth - 1 cells of padding on its low sides (buildScoreGrid's pad_cells) so that no window
+ * reaching data starts outside it; with less, the constructor throws std::invalid_argument. A
+ * window that starts past the high sides reaches no data, so those need none. */
 struct ScorePyramid
 {
   std::vector<ScoreGrid> levels;  ///< levels[0] is the base grid

@@ -52,6 +52,34 @@ TEST(CorrelativeGrid, CellsAreTheKernelOfTheNearestPoint)
   EXPECT_THROW(buildScoreGrid(pts, 0, sigma), std::invalid_argument);
 }
 
+TEST(CorrelativeGrid, TheGridHoldsTheRaysOriginsAndPadsOnlyItsLowSides)
+{
+  const double res = 0.1, sigma = 0.1;
+  const std::vector<Eigen::Vector2d> hits = {{10.03, 0.04}, {10.03, 1.04}, {10.03, 2.04}};
+  const ScoreGrid plain = buildScoreGrid(hits, res, sigma, 7);
+  // The kernel's reach on every side, 7 cells of padding on the low sides only.
+  const int reach = static_cast<int>(std::ceil(3 * sigma / res));
+  EXPECT_NEAR(plain.origin.x(), hits.front().x() - (7 + reach) * res, 1e-9);
+  EXPECT_NEAR(plain.origin.y(), hits.front().y() - (7 + reach) * res, 1e-9);
+  EXPECT_EQ(plain.width, plain.cellOf(hits.back()).x() + reach + 1);
+  EXPECT_EQ(plain.height, plain.cellOf(hits.back()).y() + reach + 1);
+  // A sensor 10 m from its hits (beyond reach and padding): the grid grows by whole cells to
+  // hold it, its cells stay where they were, and the free space reaches the sensor.
+  ScoreGrid grid = buildScoreGrid(hits, res, sigma, 7, {{0, 1}, {Eigen::Vector2d::Constant(NAN)}});
+  EXPECT_EQ(grid.height, plain.height);
+  EXPECT_EQ(grid.width, plain.width - plain.cellOf({0, 1}).x());
+  EXPECT_EQ(grid.cellOf({0, 1}).x(), 0);
+  for (const auto& p : hits)
+    EXPECT_EQ(grid.at(grid.cellOf(p).x(), grid.cellOf(p).y()), plain.at(plain.cellOf(p).x(), plain.cellOf(p).y()));
+  std::vector<Ray> rays;
+  for (const auto& p : hits) rays.push_back({{0, 1}, p});
+  markFreeSpace(grid, rays, -200);
+  const Eigen::Vector2i near_sensor = grid.cellOf({0.3, 1.0});
+  EXPECT_EQ(grid.at(near_sensor.x(), near_sensor.y()), -200);
+  const ScorePyramid pyr(grid, 3);
+  EXPECT_EQ(pyr.levels[3].width, grid.width);
+}
+
 TEST(CorrelativeGrid, PyramidLevelsAreWindowMaxima)
 {
   std::mt19937 rng(5);

@@ -18,10 +18,14 @@ double angleDiff(double a, double b) { return std::abs(std::remainder(a - b, 2 *
 ScorePyramid searchPyramid(const std::vector<Ray>& reference, const CorrelativeParams& p)
 {
   const int depth = depthForWindow(p.window_xy, p.resolution);
-  std::vector<Eigen::Vector2d> hits;
+  std::vector<Eigen::Vector2d> hits, origins;
   hits.reserve(reference.size());
-  for (const auto& r : reference) hits.push_back(r.hit);
-  auto grid = buildScoreGrid(hits, p.resolution, p.sigma, (1 << depth) - 1);
+  for (const auto& r : reference)
+  {
+    hits.push_back(r.hit);
+    if (origins.empty() || r.origin != origins.back()) origins.push_back(r.origin);
+  }
+  auto grid = buildScoreGrid(hits, p.resolution, p.sigma, (1 << depth) - 1, origins);
   if (p.free_space_score < 0)
     markFreeSpace(grid, reference, static_cast<int>(std::lround(255 * p.free_space_score)));
   return ScorePyramid(std::move(grid), depth);
