@@ -18,7 +18,7 @@ double translationCost(const SearchWindow& w, double d) { return w.cost_per_m * 
 void rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts, double theta,
                   const Eigen::Vector2d& t, std::vector<Eigen::Vector2i>& out)
 {
-  // g.cellOf(R p + t), in a loop without calls or growth that the compiler vectorizes.
+  // g.cellOf(R p + t), in a loop without calls or growth (an integer floor of its own).
   const double c = std::cos(theta), s = std::sin(theta);
   const double ox = g.origin.x(), oy = g.origin.y(), r = g.resolution;
   auto floorOf = [](double v) {
