@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The corrected CARMEN logs, laser only, with config/default.ini (no per-dataset tuning): each
-# log's ATE against its reference poses, graph size, and the scans tracked by fallback and the
-# ambiguous ones (doc/tracking.md). Needs a built tree (scripts/build.sh).
+# log's ATE against its reference poses, graph size, and the scans tracked by fallback, the
+# ambiguous ones and those of them the prediction decided along a direction (doc/tracking.md).
+# Needs a built tree (scripts/build.sh).
 # Then the same logs played backwards in time (each log's FLASER lines in reverse order, their
 # timestamps mirrored): the same scans, met in another order, so tracking takes other decisions;
 # a check that the first table is not one lucky sequence of them. Last, each log started a
@@ -28,9 +29,10 @@ run() {  # name carmen-log
     --no-render > /dev/null 2>&1 || true
   local s=$out/$name/summary.md
   if [[ ! -f $s ]]; then echo "$name: swslam failed (see: $bin/swslam -c $cfg -i $log -o $out/$name -d --no-odometry)"; return; fi
-  printf "%-28s %-10s %-7s %-24s %-9s %-9s\n" "$name" "$(field 'ATE (rmse)' "$s")" \
+  printf "%-28s %-10s %-7s %-24s %-9s %-9s %-9s\n" "$name" "$(field 'ATE (rmse)' "$s")" \
     "$(field 'Number of graph nodes' "$s")" "$(field 'Number of graph constraints' "$s")" \
-    "$(field 'Scans tracked by fallback' "$s")" "$(field 'Ambiguous scans' "$s")"
+    "$(field 'Scans tracked by fallback' "$s")" "$(field 'Ambiguous scans' "$s")" \
+    "$(field 'of them decided by the prediction' "$s")"
 }
 # A log played backwards: its FLASER lines in reverse order, each timestamp t mirrored to
 # first + last - t (so they increase again).
@@ -47,7 +49,7 @@ reversed() {  # carmen-log out.log
 started() {  # carmen-log from out.log
   zcat -f "$1" | awk -v from="$2" '$1 == "FLASER" && n++ >= from' > "$3"
 }
-printf "%-28s %-10s %-7s %-24s %-9s %-9s\n" log ATE nodes "constraints (loops)" fallback ambiguous
+printf "%-28s %-10s %-7s %-24s %-9s %-9s %-9s\n" log ATE nodes "constraints (loops)" fallback ambiguous decided
 logs=("$carmen_dir"/*-corrected.log.gz)
 for log in "${logs[@]}"; do
   [[ -f $log ]] || continue

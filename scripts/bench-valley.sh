@@ -94,7 +94,7 @@ for log in "$carmen_dir"/*-corrected.log.gz; do
 done
 "$bin/swslam" -c $cfg -i datasets/open-water/open-water.rawlog -g datasets/open-water/open-water.gt.tum \
   -o "$out/open-water" -d -q --no-render > /dev/null 2>&1
-echo "open-water: ATE $(field 'ATE (rmse)' "$out/open-water/summary.md"), scans by fallback $(field 'Scans tracked by fallback' "$out/open-water/summary.md") of $(field 'Scans processed' "$out/open-water/summary.md"), ambiguous $(field 'Ambiguous scans' "$out/open-water/summary.md")"
+echo "open-water: ATE $(field 'ATE (rmse)' "$out/open-water/summary.md"), scans by fallback $(field 'Scans tracked by fallback' "$out/open-water/summary.md") of $(field 'Scans processed' "$out/open-water/summary.md"), ambiguous $(field 'Ambiguous scans' "$out/open-water/summary.md") (decided by the prediction $(field 'of them decided by the prediction' "$out/open-water/summary.md"))"
 
 echo "== 5. MRPT Telecom Faculty one-loop rawlog"
 telecom="/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"

@@ -14,8 +14,9 @@ Usage: python3 scripts/plot-stats.py RUN_DIR/stats.csv OUT_DIR [--x time|scan]
 stats.csv has a header line and one comma-separated row per input scan:
   scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,
   match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization,switched_off,
-  ambiguous
-(doc/system.md describes each column).
+  ambiguous,prior_decided
+(doc/system.md describes each column; a file written before prior_decided existed, without
+that last column, is read too).
 A missing or malformed value is an error naming its line and column. Each figure is written
 under a temporary name in OUT_DIR (created if missing) and renamed. Needs matplotlib
 (Debian: python3-matplotlib, installed by scripts/install-deps.sh).
@@ -30,7 +31,7 @@ import tempfile
 
 COLUMNS = ["scan", "timestamp", "source", "valid_rays", "correspondences", "match_sq_residuals",
            "active_sq_residuals", "match_ms", "tracking_ms", "graph_ms", "map_ms", "keyframe",
-           "new_node", "loops", "full_optimization", "switched_off", "ambiguous"]
+           "new_node", "loops", "full_optimization", "switched_off", "ambiguous", "prior_decided"]
 SOURCES = ("first", "match", "searched", "odometry", "constant_motion")
 INT_RE = re.compile(r"[0-9]+")
 FLOAT_RE = re.compile(r"[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?")
@@ -78,7 +79,7 @@ PARSERS = {"scan": count, "timestamp": number, "source": source, "valid_rays": c
            "active_sq_residuals": duration, "match_ms": duration,
            "tracking_ms": duration, "graph_ms": duration, "map_ms": duration,
            "keyframe": count, "new_node": flag, "loops": count, "full_optimization": flag,
-           "switched_off": count, "ambiguous": count}
+           "switched_off": count, "ambiguous": count, "prior_decided": count}
 
 
 def read_stats(path):
@@ -91,16 +92,16 @@ def read_stats(path):
     if not lines:
         raise StatsError(f"{path}: empty file (expected the header {','.join(COLUMNS)})")
     header = [h.strip() for h in lines[0].split(",")]
-    if header != COLUMNS:
+    if header not in (COLUMNS, COLUMNS[:-1]):  # the second: written before prior_decided
         raise StatsError(f"{path}:1: header is '{lines[0]}', expected '{','.join(COLUMNS)}'")
-    cols = {c: [] for c in COLUMNS}
+    cols = {c: [] for c in header}
     for lineno, line in enumerate(lines[1:], start=2):
         if not line.strip():
             continue
         fields = [v.strip() for v in line.split(",")]
-        if len(fields) != len(COLUMNS):
-            raise StatsError(f"{path}:{lineno}: {len(fields)} values, expected {len(COLUMNS)}")
-        for name, text in zip(COLUMNS, fields):
+        if len(fields) != len(header):
+            raise StatsError(f"{path}:{lineno}: {len(fields)} values, expected {len(header)}")
+        for name, text in zip(header, fields):
             if text == "":
                 raise StatsError(f"{path}:{lineno}: column '{name}': missing value")
             try:

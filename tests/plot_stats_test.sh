@@ -17,7 +17,7 @@ if [[ -z $py ]]; then
   exit 77
 fi
 
-header=scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization,switched_off,ambiguous
+header=scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization,switched_off,ambiguous,prior_decided
 good=$work/stats.csv
 {
   echo "$header"
@@ -27,7 +27,7 @@ good=$work/stats.csv
     for (k = 0; k < 400; k++) {
       src = k == 0 ? "first" : (k % 97 == 0 ? "odometry" : (k % 131 == 0 ? "constant_motion" : (k % 89 == 0 ? "searched" : "match")));
       node = k % 10 == 0;
-      printf "%d,%.6f,%s,%d,%d,%.6g,%.6g,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,0,0\n", k, 1700000000 + k / 40.0,
+      printf "%d,%.6f,%s,%d,%d,%.6g,%.6g,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,0,0,0\n", k, 1700000000 + k / 40.0,
         src, 400 + 300 * sin(k / 30.0), 350 + 250 * sin(k / 30.0), 0.2 + 0.1 * cos(k / 7.0),
         5 + 2 * cos(k / 50.0), 0.3 + 0.05 * sin(k), 0.1, node ? 12 + sin(k) : 0, node ? 3.5 : 0,
         int(k / 10), node, k == 300, k == 300
@@ -50,6 +50,13 @@ assert a.ndim == 3 and a.shape[0] > 300 and a.shape[1] > 600, a.shape
   [[ $(ls -A "$out") == $'fig6.png\nfig7.png' ]] || { echo "unexpected files:" >&2; ls -A "$out" >&2; exit 1; }
 done
 grep -q "wrote $out/fig7.png" "$work/log.txt"
+
+# A stats.csv written before the prior_decided column is read as well.
+sed '1s/,prior_decided$//; 2,$s/,0$//' "$good" > "$work/older.csv"
+[[ $(head -1 "$work/older.csv" | tr ',' '\n' | wc -l) -eq 17 ]]
+rm -rf "$out"
+"$py" "$script" "$work/older.csv" "$out" > /dev/null
+[[ -s $out/fig6.png && -s $out/fig7.png ]] || { echo "figures missing for an older stats.csv" >&2; exit 1; }
 
 # Fig. 7 stays readable when a full optimization's sum dwarfs the rest: a log scale, and the
 # full optimizations drawn apart (stars), out of the sliding window's line with the scans that
@@ -90,17 +97,17 @@ bad() {  # name expected-message; the csv is on stdin
   cat "$work/err.txt"
 }
 head -3 "$good" > "$work/head.csv"
-{ cat "$work/head.csv"; echo "3,1700000000.075,match,abc,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0,0,0"; } |
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,abc,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0,0,0,0"; } |
   bad garbage "garbage.csv:4: column 'valid_rays': 'abc' is not a non-negative integer"
-{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,,4.5,0.3,0.1,0,0,0,0,0,0,0,0"; } |
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,,4.5,0.3,0.1,0,0,0,0,0,0,0,0,0"; } |
   bad missing "missing.csv:4: column 'match_sq_residuals': missing value"
-{ cat "$work/head.csv"; echo "3,1700000000.075,guess,400,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0,0,0"; } |
+{ cat "$work/head.csv"; echo "3,1700000000.075,guess,400,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0,0,0,0"; } |
   bad source "source.csv:4: column 'source': 'guess' is not one of first|match|searched|odometry|constant_motion"
-{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,4.5,nan,0.1,0,0,0,0,0,0,0,0"; } |
+{ cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,4.5,nan,0.1,0,0,0,0,0,0,0,0,0"; } |
   bad nan "nan.csv:4: column 'match_ms': 'nan' is not a finite number"
 { cat "$work/head.csv"; echo "3,1700000000.075,match,400,300,0.2,4.5,0.3,0.1"; } |
-  bad short "short.csv:4: 9 values, expected 17"
-{ cat "$work/head.csv"; echo "1,1700000000.075,match,400,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0,0,0"; } |
+  bad short "short.csv:4: 9 values, expected 18"
+{ cat "$work/head.csv"; echo "1,1700000000.075,match,400,300,0.2,4.5,0.3,0.1,0,0,0,0,0,0,0,0,0"; } |
   bad order "order.csv:4: scan 1 does not follow scan 1"
 sed '1s/loops/loop/' "$good" | bad header "header.csv:1: header is"
 echo "$header" | bad empty "empty.csv: no scan rows"

@@ -25,7 +25,10 @@ system::RunSummary summarizeRun(const system::RunResults& results, double wall_t
     if (r.source == tracking::TrackingSource::Odometry || r.source == tracking::TrackingSource::ConstantMotion)
       s.fallback_scans++;
     else if (r.ambiguous > 0)
+    {
       s.ambiguous_scans++;
+      if (r.prior_decided > 0) s.prior_decided_scans++;
+    }
   // Along the keyframes, then to the last scan: summed from scan to scan, the distance would
   // add up the matching's jitter (96.996 m on lake-short, whose ground truth travels 92.25 m).
   const auto step = [](const common::StampedPose& a, const common::StampedPose& b) {

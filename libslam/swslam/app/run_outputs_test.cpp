@@ -1,5 +1,6 @@
 // A run's Table I and files: the distance travelled follows the keyframes, not the scan-to-scan
-// jitter; writeRunOutputs writes exactly the files runOutputFiles() names.
+// jitter; ambiguous scans are counted apart from fallbacks; writeRunOutputs writes exactly
+// the files runOutputFiles() names.
 #include <swslam/app/run_outputs.h>
 
 #include <gtest/gtest.h>
@@ -39,6 +40,25 @@ TEST(RunOutputs, TheDistanceFollowsTheKeyframesNotTheJitter)
   EXPECT_NEAR(s.distance, 10.0, 1e-9);  // 9 m of keyframes, then 1 m to the last scan
   EXPECT_EQ(s.scans, 1001u);
   EXPECT_EQ(s.nodes, 10u);
+}
+
+TEST(RunOutputs, AmbiguousScansAndThoseThePredictionDecidedAreCountedApartFromFallbacks)
+{
+  system::RunResults r = straightRunWithJitter();
+  auto set = [&](size_t k, tracking::TrackingSource source, int ambiguous, int prior_decided) {
+    r.stats[k].source = source;
+    r.stats[k].ambiguous = ambiguous;
+    r.stats[k].prior_decided = prior_decided;
+  };
+  set(10, tracking::TrackingSource::Match, 1, 0);     // a weak direction, reported only
+  set(11, tracking::TrackingSource::Match, 2, 1);     // the prediction decided one of two
+  set(12, tracking::TrackingSource::Searched, 1, 1);  // ... the only one
+  set(13, tracking::TrackingSource::ConstantMotion, 0, 0);
+  set(14, tracking::TrackingSource::Odometry, 1, 1);  // a fallback counts as such only
+  const system::RunSummary s = app::summarizeRun(r, 1.0);
+  EXPECT_EQ(s.fallback_scans, 2u);
+  EXPECT_EQ(s.ambiguous_scans, 3u);
+  EXPECT_EQ(s.prior_decided_scans, 2u);
 }
 
 TEST(RunOutputs, EveryFileWrittenIsNamedByRunOutputFiles)

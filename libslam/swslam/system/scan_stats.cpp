@@ -11,16 +11,16 @@ std::string formatStatsCsv(const std::vector<ScanStats>& rows)
   std::ostringstream out;
   out << "scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,"
          "active_sq_residuals,match_ms,tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,"
-         "full_optimization,switched_off,ambiguous\n";
+         "full_optimization,switched_off,ambiguous,prior_decided\n";
   char line[512];
   for (const ScanStats& r : rows)
   {
     std::snprintf(line, sizeof(line),
-                  "%zu,%.6f,%s,%zu,%zu,%.6g,%.6g,%.4f,%.4f,%.4f,%.4f,%zu,%d,%zu,%d,%zu,%d\n", r.scan,
+                  "%zu,%.6f,%s,%zu,%zu,%.6g,%.6g,%.4f,%.4f,%.4f,%.4f,%zu,%d,%zu,%d,%zu,%d,%d\n", r.scan,
                   r.timestamp, toString(r.source), r.valid_rays, r.correspondences,
                   r.match_sq_residuals, r.active_sq_residuals, r.match_ms, r.tracking_ms,
                   r.graph_ms, r.map_ms, r.keyframe, r.new_node ? 1 : 0, r.loops,
-                  r.full_optimization ? 1 : 0, r.switched_off, r.ambiguous);
+                  r.full_optimization ? 1 : 0, r.switched_off, r.ambiguous, r.prior_decided);
     out << line;
   }
   return out.str();
@@ -64,6 +64,9 @@ std::string formatRunSummary(const RunSummary& s)
   std::snprintf(buf, sizeof(buf), "| Scans tracked by fallback | %zu |\n", s.fallback_scans);
   out << buf;
   std::snprintf(buf, sizeof(buf), "| Ambiguous scans (weak direction or second peak) | %zu |\n", s.ambiguous_scans);
+  out << buf;
+  std::snprintf(buf, sizeof(buf), "| of them decided by the prediction along a direction | %zu |\n",
+                s.prior_decided_scans);
   out << buf;
   std::snprintf(buf, sizeof(buf), "| Number of graph nodes | %zu |\n", s.nodes);
   out << buf;

@@ -26,7 +26,8 @@ struct ScanStats
   size_t loops = 0;  ///< loop edges accepted for this scan's node
   bool full_optimization = false;
   size_t switched_off = 0;  ///< robustified edges the latest optimization for this scan switched off
-  int ambiguous = 0;  ///< weak directions of the scan's match, taken from the prediction (0: none)
+  int ambiguous = 0;      ///< directions the scan's match could not decide (TrackingStep::ambiguous)
+  int prior_decided = 0;  ///< of those, the ones the prediction decided (TrackingStep::prior_decided)
 };
 
 /** stats.csv text: a header line, then one line per scan. */
@@ -47,7 +48,8 @@ struct RunSummary
   size_t scans = 0, skipped_scans = 0, nodes = 0, constraints = 0, loops = 0;
   size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t fallback_scans = 0;  ///< scans whose pose came from odometry or constant motion
-  size_t ambiguous_scans = 0;  ///< scans whose match had a weak direction (ScanStats::ambiguous)
+  size_t ambiguous_scans = 0;  ///< scans whose match had a weak direction or a second peak (ScanStats::ambiguous)
+  size_t prior_decided_scans = 0;  ///< of those, scans the prediction decided along a direction
   double distance = 0;        ///< [m] along the keyframes, then to the last scan
   double duration = 0;        ///< [s] of sensor time
   double wall_time = 0;       ///< [s] processing time

@@ -162,6 +162,7 @@ void SlamSystem::trackOne(const sensor::ScanInput& input, size_t index)
   row.keyframe = step.keyframe;
   row.new_node = step.new_keyframe;
   row.ambiguous = step.ambiguous;
+  row.prior_decided = step.prior_decided;
   {
     std::lock_guard<std::mutex> lock(results_mutex_);
     stats_.push_back(row);

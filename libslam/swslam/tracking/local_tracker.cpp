@@ -195,12 +195,12 @@ bool LocalTracker::pastKeyframeThreshold(const CPose2D& rel) const
          std::abs(rel.phi()) > tracking_.keyframe_rotation;
 }
 
-int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref,
-                                     const FacingNormals& ref_facing, const sensor::Scan& cur,
-                                     const FacingNormals* cur_facing, const CPose2D& prior, double prior_var_xy,
-                                     double length) const
+LocalTracker::WeakDirections LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref,
+                                                              const FacingNormals& ref_facing, const sensor::Scan& cur,
+                                                              const FacingNormals* cur_facing, const CPose2D& prior,
+                                                              double prior_var_xy, double length) const
 {
-  if (!m.ok() || tracking_.ambiguity_factor <= 0) return 0;
+  if (!m.ok() || tracking_.ambiguity_factor <= 0) return {};
   const double noise = residualNoiseVariance(m.sum_sq_residuals, m.correspondences, plicp_.range_sigma * plicp_.range_sigma);
   const double threshold = weakRatioThreshold(noise, plicp_.min_segment_length, tracking_.ambiguity_factor);
   const Ambiguity a = findWeakDirections(m.covariance, length, threshold);
@@ -225,14 +225,13 @@ int LocalTracker::takePriorWhereWeak(plicp::MatchResult& m, const plicp::Referen
                                      tracking_.unobservable_min_rays);
     }
   }
-  if (taken.weak == 0) return a.weak;
-  const int ambiguous = std::max(a.weak, taken.weak);
+  if (taken.weak == 0) return {a.weak, 0};
   const double sth = tracking_.lost_prior_sigma_theta;
   Eigen::Vector3d x(m.pose.x(), m.pose.y(), m.pose.phi());
   takePriorAlongWeak(x, m.covariance, Eigen::Vector3d(prior.x(), prior.y(), prior.phi()),
                      Eigen::Vector3d(prior_var_xy, prior_var_xy, sth * sth).asDiagonal(), taken, length);
   m.pose = CPose2D(x.x(), x.y(), x.z());
-  return ambiguous;
+  return {std::max(a.weak, taken.weak), taken.weak};
 }
 
 std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, const Keyframe& to,
@@ -311,11 +310,13 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   // prediction replaced its weak directions, which would confirm it there by construction.
   const plicp::MatchResult raw = step.match;
   const double lost_var = tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy;
-  step.ambiguous = takePriorWhereWeak(step.match, *last.scan, *last.facing, scan, nullptr,
-                                      geometry::sensorMotion(last.sensor_pose, predicted),
-                                      steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
-                                      rotationLength(scan.points)) +
-                   (step.two_peaks ? 1 : 0);
+  const WeakDirections weak =
+      takePriorWhereWeak(step.match, *last.scan, *last.facing, scan, nullptr,
+                         geometry::sensorMotion(last.sensor_pose, predicted),
+                         steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
+                         rotationLength(scan.points));
+  step.ambiguous = weak.weak + (step.two_peaks ? 1 : 0);
+  step.prior_decided = weak.prior_decided;
   // A match that is one of two poses the scan cannot tell apart: its variance along their
   // separation is the separation's square (after the weak directions: the prediction never
   // averages two peaks).

@@ -61,9 +61,12 @@ struct TrackingStep
   size_t valid_rays = 0;           ///< valid rays of this scan
   bool two_peaks = false;  ///< the search found a second pose, far from the kept one, of similar score...
   Eigen::Vector3d peak_offset = Eigen::Vector3d::Zero();  ///< ...this far from it (sensor frame [x, y, theta])
-  /** Directions the scan could not decide: the kept match's weak ones (where it took the
-   * prediction), plus one for a second peak of the search (0: none) */
+  /** Directions the scan could not decide: the kept match's weak ones, plus one for a second
+   * peak of the search (0: none) */
   int ambiguous = 0;
+  /** Of the weak ones, those along which the prediction decided the pose: the unobservable
+   * ones (no ray faces them), or all of them with ambiguity_take_prior (0: none) */
+  int prior_decided = 0;
 };
 
 class LocalTracker
@@ -90,14 +93,20 @@ class LocalTracker
                                        graph::EdgeKind kind) const;
   graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to) const;
   bool pastKeyframeThreshold(const mrpt::poses::CPose2D& relative) const;
+  /** How many of a match's directions were weak, and along how many of them the prior decided. */
+  struct WeakDirections
+  {
+    int weak = 0, prior_decided = 0;
+  };
   /** The weak directions of a converged match of `cur` against `ref`, given with their
    * FacingNormals (`cur_facing` nullptr: computed here if needed; tracking/ambiguity.h):
-   * returns how many, and takes `prior` (sensor frame;
-   * translation variance prior_var_xy, rotation variance lost_prior_sigma_theta^2) along those
-   * of them that are unobservable, or along all of them with ambiguity_take_prior. */
-  int takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref, const FacingNormals& ref_facing,
-                         const sensor::Scan& cur, const FacingNormals* cur_facing, const mrpt::poses::CPose2D& prior,
-                         double prior_var_xy, double length) const;
+   * takes `prior` (sensor frame; translation variance prior_var_xy, rotation variance
+   * lost_prior_sigma_theta^2) along those of them that are unobservable, or along all of them
+   * with ambiguity_take_prior, and says how many there were of each. */
+  WeakDirections takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref,
+                                    const FacingNormals& ref_facing, const sensor::Scan& cur,
+                                    const FacingNormals* cur_facing, const mrpt::poses::CPose2D& prior,
+                                    double prior_var_xy, double length) const;
   /** After a search: the offset from the match of a second peak of the search's objective of
    * similar height, away from the match's own (correlative/peaks.h), if there is one. */
   std::optional<Eigen::Vector3d> secondPeakOffset(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess,

@@ -365,6 +365,7 @@ namespace
 struct WeakRun
 {
   int ambiguous_scans = 0, fallback_scans = 0;
+  int prior_decided_scans = 0;  ///< scans the prediction decided along a direction
   double worst_x_drift = 0;  ///< largest change of the along-x error past the posts [m]
   /** Largest change of the along-x error from one scan to the next, past the posts [m]: a
    * scan moved off the others (a steady drift of the prediction's speed counts too). */
@@ -393,6 +394,8 @@ WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind)
     obs.timestamp = mrpt::Clock::fromDouble(1000 + 0.1 * k);
     const auto step = tracker.process(obs);
     if (step.ambiguous > 0) r.ambiguous_scans++;
+    if (step.prior_decided > 0) r.prior_decided_scans++;
+    EXPECT_LE(step.prior_decided, step.ambiguous) << "scan " << k;
     if (step.source == TrackingSource::ConstantMotion) r.fallback_scans++;
     if (k == 20) x_error_20 = step.pose.x() - 0.1 * k;
     if (k >= 20) r.worst_x_drift = std::max(r.worst_x_drift, std::abs(step.pose.x() - 0.1 * k - x_error_20));
@@ -413,6 +416,7 @@ TEST(LocalTracker, AlongACorridorThePredictionDecidesAndTheEdgesSaySo)
   tp.ambiguity_take_prior = true;
   const WeakRun r = driveAlongX(test::corridorWorld(), tp, 35);
   EXPECT_GE(r.ambiguous_scans, 35) << "the corridor's axis is weak";
+  EXPECT_GE(r.prior_decided_scans, 35) << "and the prediction decides along it";
   EXPECT_EQ(r.fallback_scans, 1) << "the blind scan";
   EXPECT_LT(r.worst_x_drift, 0.1) << "no jump along the axis, through the blind scan too";
   EXPECT_LT(r.worst_y_error, 0.05);
@@ -424,6 +428,7 @@ TEST(LocalTracker, AlongACorridorThePredictionDecidesAndTheEdgesSaySo)
   tp = TrackingParams();
   const WeakRun unobservable = driveAlongX(test::corridorWorld(), tp, 35);
   EXPECT_GE(unobservable.ambiguous_scans, 35);
+  EXPECT_GE(unobservable.prior_decided_scans, 30) << "the scans past the posts";
   EXPECT_LT(unobservable.worst_x_jump, 0.05);
   EXPECT_LT(unobservable.worst_x_drift, 1.0);
   EXPECT_GE(unobservable.min_edge_x_variance, 0.02);
@@ -432,6 +437,7 @@ TEST(LocalTracker, AlongACorridorThePredictionDecidesAndTheEdgesSaySo)
   tp.unobservable_min_rays = 0;
   const WeakRun reported = driveAlongX(test::corridorWorld(), tp, 35);
   EXPECT_GE(reported.ambiguous_scans, 35);
+  EXPECT_EQ(reported.prior_decided_scans, 0);
   EXPECT_GT(reported.worst_x_jump, 0.3);
   EXPECT_LT(reported.min_edge_x_variance, 0.002);
   tp.ambiguity_factor = 0;
@@ -458,6 +464,7 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   tp = TrackingParams();
   const WeakRun reported = driveAlongX(wall, tp, -1);
   EXPECT_GE(reported.ambiguous_scans, 35);
+  EXPECT_GE(reported.prior_decided_scans, 35);
   EXPECT_EQ(reported.fallback_scans, 0);
   EXPECT_LT(reported.worst_x_jump, 0.05) << "no jump along the wall";
   EXPECT_LT(reported.worst_x_drift, 1.5);
@@ -465,6 +472,7 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   // Without the unobservable rule the searches slide the scans along the wall by metres.
   tp.unobservable_min_rays = 0;
   const WeakRun slid = driveAlongX(wall, tp, -1);
+  EXPECT_EQ(slid.prior_decided_scans, 0) << "weak directions only reported";
   EXPECT_GT(slid.worst_x_jump, 0.3);
   EXPECT_GT(slid.worst_x_drift, 3.0);
 }
@@ -475,6 +483,7 @@ TEST(LocalTracker, ARoomIsNotAmbiguous)
   tp.ambiguity_take_prior = true;
   const WeakRun r = driveAlongX(test::roomWorld(), tp, -1);
   EXPECT_EQ(r.ambiguous_scans, 0);
+  EXPECT_EQ(r.prior_decided_scans, 0);
   EXPECT_LT(r.min_edge_x_variance, 0.01);
 }
 
