@@ -60,6 +60,12 @@ map::Overlay overlayOf(const system::RunResults& results)
 {
   map::Overlay in;
   for (const common::StampedPose& p : results.trajectory) in.trajectory.push_back(p.pose);
+  // One stats row per trajectory pose (the scans tracked, in order): mark those the
+  // prediction placed.
+  if (results.stats.size() == results.trajectory.size())
+    for (const system::ScanStats& r : results.stats)
+      in.by_prediction.push_back(r.source == tracking::TrackingSource::Odometry ||
+                                 r.source == tracking::TrackingSource::ConstantMotion || r.prior_decided > 0);
   std::unordered_map<graph::PoseGraph::TNodeID, size_t> index;
   for (const auto id : results.graph.nodeIds())
   {

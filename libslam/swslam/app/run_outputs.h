@@ -27,8 +27,9 @@ std::vector<std::string> runOutputFiles();
 system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,
                         const std::vector<common::StampedPose>* ground_truth = nullptr, double max_dt = 0.01);
 
-/** What the map pictures draw: the every-scan trajectory, the nodes and every graph edge by
- * kind, those in `results.switched_off` marked. */
+/** What the map pictures draw: the every-scan trajectory (the scans the prediction placed, by
+ * fallback or along a direction their match could not decide, marked), the nodes and every
+ * graph edge by kind, those in `results.switched_off` marked. */
 map::Overlay overlayOf(const system::RunResults& results);
 
 }  // namespace swslam::app

@@ -42,7 +42,7 @@ TEST(RunOutputs, TheDistanceFollowsTheKeyframesNotTheJitter)
   EXPECT_EQ(s.nodes, 10u);
 }
 
-TEST(RunOutputs, AmbiguousScansAndThoseThePredictionDecidedAreCountedApartFromFallbacks)
+TEST(RunOutputs, ScansThePredictionPlacedAreCountedAndMarkedForThePictures)
 {
   system::RunResults r = straightRunWithJitter();
   auto set = [&](size_t k, tracking::TrackingSource source, int ambiguous, int prior_decided) {
@@ -59,6 +59,12 @@ TEST(RunOutputs, AmbiguousScansAndThoseThePredictionDecidedAreCountedApartFromFa
   EXPECT_EQ(s.fallback_scans, 2u);
   EXPECT_EQ(s.ambiguous_scans, 3u);
   EXPECT_EQ(s.prior_decided_scans, 2u);
+  // The pictures mark the scans the prediction placed: by fallback, or along a direction.
+  const map::Overlay o = app::overlayOf(r);
+  ASSERT_EQ(o.by_prediction.size(), o.trajectory.size());
+  EXPECT_EQ(o.countByPrediction(), 4u);
+  for (const size_t k : {11, 12, 13, 14}) EXPECT_TRUE(o.by_prediction[k]) << k;
+  EXPECT_FALSE(o.by_prediction[10]) << "a weak direction only reported";
 }
 
 TEST(RunOutputs, EveryFileWrittenIsNamedByRunOutputFiles)

@@ -69,13 +69,18 @@ mrpt::img::CImage drawMapPicture(const mrpt::maps::COccupancyGridMap2D& grid, co
     const auto a = view.toImage(overlay.trajectory[i - 1].x(), overlay.trajectory[i - 1].y());
     const auto b = view.toImage(overlay.trajectory[i].x(), overlay.trajectory[i].y());
     img.line(static_cast<int>(std::floor(a.x)), static_cast<int>(std::floor(a.y)), static_cast<int>(std::floor(b.x)),
-             static_cast<int>(std::floor(b.y)), colors::kTrajectory, 2);
+             static_cast<int>(std::floor(b.y)),
+             overlay.segmentByPrediction(i) ? colors::kByPrediction : colors::kTrajectory, 2);
   }
   drawStartAndEnd(img, view, overlay.trajectory);
   MapPictureLayout l;
   l.view = view;
   l.pixels_per_cell = k;
-  l.scale_bar = drawLegendAndScaleBar(img, view, mapLegend(), &l.legend);
+  std::vector<LegendEntry> legend = mapLegend();
+  if (const size_t n = overlay.countByPrediction(); n > 0)  // after "trajectory"
+    legend.insert(legend.begin() + 4, {"placed by the prediction (" + std::to_string(n) + " scans)",
+                                       colors::kByPrediction, LegendEntry::Symbol::Line, 3});
+  l.scale_bar = drawLegendAndScaleBar(img, view, legend, &l.legend);
   if (layout) *layout = l;
   return img;
 }

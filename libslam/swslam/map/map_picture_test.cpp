@@ -75,6 +75,32 @@ TEST(MapPicture, CellsTrajectoryAndMarksSitWhereTheWallsSayAndTheScaleBarIsTrue)
             100u);
 }
 
+TEST(MapPicture, ScansPlacedByThePredictionAreDrawnApartWithALegendEntry)
+{
+  const auto g = test::wallGrid();
+  Overlay o = walk();
+  MapPictureLayout plain_layout;
+  const mrpt::img::CImage plain = drawMapPicture(g, o, &plain_layout);
+  EXPECT_EQ(test::countNear(plain, colors::kByPrediction, 0, 0, 1 << 30, 1 << 30, 20), 0u) << "none marked";
+  o.by_prediction.assign(o.trajectory.size(), false);
+  for (int i = 25; i <= 32; i++) o.by_prediction[i] = true;
+  MapPictureLayout layout;
+  const mrpt::img::CImage img = drawMapPicture(g, o, &layout);
+  auto around = [&](size_t i, const mrpt::img::TColor& c) {
+    const auto q = layout.view.toImage(o.trajectory[i].x(), o.trajectory[i].y());
+    return test::countNear(img, c, int(q.x) - 3, int(q.y) - 3, int(q.x) + 3, int(q.y) + 3, 20);
+  };
+  EXPECT_GT(around(29, colors::kByPrediction), 3u);
+  EXPECT_EQ(around(29, colors::kTrajectory), 0u);
+  EXPECT_GT(around(15, colors::kTrajectory), 3u);
+  EXPECT_EQ(around(15, colors::kByPrediction), 0u);
+  const PixelBox& l = layout.legend;
+  EXPECT_GT(test::countNear(img, colors::kByPrediction, l.u0, l.v0, l.u1, l.v1, 20), 20u);
+  EXPECT_GT(l.v1 - l.v0, plain_layout.legend.v1 - plain_layout.legend.v0) << "one more legend row";
+  o.by_prediction.resize(3);
+  EXPECT_THROW(drawMapPicture(g, o), std::invalid_argument);
+}
+
 TEST(MapPicture, AnEmptyGridStillGetsAFramedPicture)
 {
   mrpt::maps::COccupancyGridMap2D g(-1, 1, -1, 1, 0.05f);

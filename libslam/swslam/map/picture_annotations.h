@@ -64,7 +64,8 @@ void fillSquare(mrpt::img::CImage& img, int u, int v, int half, const mrpt::img:
 /** Colours shared by both pictures. */
 namespace colors
 {
-const mrpt::img::TColor kTrajectory(255, 140, 0), kStart(0, 170, 0), kEnd(220, 0, 0), kKeyframe(20, 20, 120),
+const mrpt::img::TColor kTrajectory(255, 140, 0), kByPrediction(120, 60, 200), kStart(0, 170, 0), kEnd(220, 0, 0),
+    kKeyframe(20, 20, 120),
     kConsecutive(30, 80, 230), kNeighbour(0, 175, 190), kLoop(230, 0, 230), kPrior(140, 90, 30),
     kSwitchedOff(210, 0, 0), kText(0, 0, 0), kBox(255, 255, 255), kBoxBorder(90, 90, 90);
 }

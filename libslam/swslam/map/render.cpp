@@ -58,8 +58,8 @@ mrpt::opengl::CSetOfTriangles::Ptr ribbons(const std::vector<Segment>& segments,
 
 /** How each kind of drawn line looks, bottom to top: along a trajectory the edges are nearly
  * collinear, so each layer is narrower than the one below and shows as a stripe of its own
- * (light-orange trajectory, teal dense-neighbour edges, dark keyframe squares, blue
- * consecutive edges); loops and switched-off edges on top. */
+ * (light-orange trajectory, violet where the prediction placed the scans, teal dense-neighbour
+ * edges, dark keyframe squares, blue consecutive edges); loops and switched-off edges on top. */
 struct Layer
 {
   const char* label;
@@ -68,8 +68,10 @@ struct Layer
   LegendEntry::Symbol symbol;
 };
 using S = LegendEntry::Symbol;
-constexpr size_t kTrajectoryLayer = 0, kKeyframeLayer = 2, kLoopLayer = 5, kSwitchedOffLayer = 6;
-const std::array<Layer, 7> kLayers = {{{"trajectory", mrpt::img::TColor(255, 185, 90), 8, S::Line},
+constexpr size_t kTrajectoryLayer = 0, kByPredictionLayer = 1, kKeyframeLayer = 3, kLoopLayer = 6,
+                 kSwitchedOffLayer = 7;
+const std::array<Layer, 8> kLayers = {{{"trajectory", mrpt::img::TColor(255, 185, 90), 8, S::Line},
+                                       {"placed by the prediction", colors::kByPrediction, 8, S::Line},
                                        {"dense neighbour edge", colors::kNeighbour, 5, S::Line},
                                        {"keyframe", colors::kKeyframe, 3, S::Dot},
                                        {"consecutive edge", colors::kConsecutive, 1.5, S::Line},
@@ -82,12 +84,12 @@ size_t layerOf(const OverlayEdge& e)
   if (e.switched_off) return kSwitchedOffLayer;
   switch (e.look)
   {
-    case EdgeLook::Consecutive: return 3;
-    case EdgeLook::DenseNeighbour: return 1;
-    case EdgeLook::Prior: return 4;
+    case EdgeLook::Consecutive: return 4;
+    case EdgeLook::DenseNeighbour: return 2;
+    case EdgeLook::Prior: return 5;
     case EdgeLook::Loop: return kLoopLayer;
   }
-  return 3;
+  return 4;
 }
 
 /** The GL picture of the plot area. */
@@ -161,7 +163,8 @@ mrpt::img::CImage renderMapImage(const mrpt::maps::COccupancyGridMap2D& grid, co
 
   std::array<std::vector<Segment>, kLayers.size()> lines;
   for (size_t i = 1; i < overlay.trajectory.size(); i++)
-    lines[kTrajectoryLayer].emplace_back(overlay.trajectory[i - 1].translation(), overlay.trajectory[i].translation());
+    lines[overlay.segmentByPrediction(i) ? kByPredictionLayer : kTrajectoryLayer].emplace_back(
+        overlay.trajectory[i - 1].translation(), overlay.trajectory[i].translation());
   for (const OverlayEdge& edge : overlay.edges)
     lines[layerOf(edge)].emplace_back(overlay.nodes[edge.from].translation(), overlay.nodes[edge.to].translation());
   // Keyframes: squares of 3 x 3 px (a segment as long as its ribbon is wide).
@@ -192,7 +195,10 @@ mrpt::img::CImage renderMapImage(const mrpt::maps::COccupancyGridMap2D& grid, co
     if (lines[i].empty()) continue;
     const Layer& l = kLayers[i];
     std::string label = l.label;
-    if (i != kTrajectoryLayer) label += " (" + std::to_string(lines[i].size()) + ")";
+    if (i == kByPredictionLayer)
+      label += " (" + std::to_string(overlay.countByPrediction()) + " scans)";
+    else if (i != kTrajectoryLayer)
+      label += " (" + std::to_string(lines[i].size()) + ")";
     legend.push_back({label, l.color, l.symbol, std::max(2, static_cast<int>(l.width_px))});
   }
   if (!overlay.trajectory.empty())

@@ -80,6 +80,26 @@ TEST(MapRender, DrawsEdgesByKindOverTheTrajectoryWithMarksScaleBarAndLegend)
                         colors::kStart, colors::kEnd, colors::kKeyframe})
     EXPECT_GT(test::countNear(img, c, l.u0, l.v0, l.u1, l.v1, 30), 5u) << int(c.R) << "," << int(c.G) << "," << int(c.B);
   EXPECT_EQ(test::countNear(img, colors::kPrior, l.u0, l.v0, l.u1, l.v1, 20), 0u) << "no prior edge, no entry";
+  EXPECT_EQ(test::countNear(img, colors::kByPrediction), 0u) << "no scan marked";
+
+  // Scans the prediction placed: their stretch of the trajectory in violet (shaded like the
+  // other ribbons, hence the default tolerance), and an entry.
+  o.by_prediction.assign(o.trajectory.size(), false);
+  for (int i = 42; i <= 48; i++) o.by_prediction[i] = true;
+  const mrpt::img::CImage marked = renderMapImage(g, o, 900, 700, &layout);
+  const auto& p = o.trajectory[45];
+  EXPECT_GT(test::countNear(marked, colors::kByPrediction, int(f.u(p.x())) - 6, int(f.v(p.y())) - 6,
+                            int(f.u(p.x())) + 6, int(f.v(p.y())) + 6),
+            10u);
+  const auto& q = o.trajectory[15];
+  EXPECT_EQ(test::countNear(marked, colors::kByPrediction, int(f.u(q.x())) - 6, int(f.v(q.y())) - 6,
+                            int(f.u(q.x())) + 6, int(f.v(q.y())) + 6),
+            0u);
+  const PixelBox& ml = layout.legend;
+  EXPECT_GT(test::countNear(marked, colors::kByPrediction, ml.u0, ml.v0, ml.u1, ml.v1), 5u);
+  o.by_prediction.pop_back();
+  EXPECT_THROW(renderMapImage(g, o, 900, 700), std::invalid_argument) << "one mark per trajectory pose";
+  o.by_prediction.clear();
 
   o.edges.push_back({1, 9});
   EXPECT_THROW(renderMapImage(g, o, 900, 700), std::invalid_argument);
