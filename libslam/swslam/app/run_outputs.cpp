@@ -22,7 +22,7 @@ system::RunSummary summarizeRun(const system::RunResults& results, double wall_t
   s.refinement_pairs = results.refinement_pairs;
   s.refinement_edges = results.refinement_edges;
   for (const system::ScanStats& r : results.stats)
-    if (r.source == tracking::TrackingSource::Odometry || r.source == tracking::TrackingSource::ConstantMotion)
+    if (tracking::isFallback(r.source))
       s.fallback_scans++;
     else if (r.ambiguous > 0)
     {
@@ -63,9 +63,7 @@ map::Overlay overlayOf(const system::RunResults& results)
   // One stats row per trajectory pose (the scans tracked, in order): mark those the
   // prediction placed.
   if (results.stats.size() == results.trajectory.size())
-    for (const system::ScanStats& r : results.stats)
-      in.by_prediction.push_back(r.source == tracking::TrackingSource::Odometry ||
-                                 r.source == tracking::TrackingSource::ConstantMotion || r.prior_decided > 0);
+    for (const system::ScanStats& r : results.stats) in.by_prediction.push_back(r.placedByPrediction());
   std::unordered_map<graph::PoseGraph::TNodeID, size_t> index;
   for (const auto id : results.graph.nodeIds())
   {

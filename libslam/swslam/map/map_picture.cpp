@@ -77,9 +77,12 @@ mrpt::img::CImage drawMapPicture(const mrpt::maps::COccupancyGridMap2D& grid, co
   l.view = view;
   l.pixels_per_cell = k;
   std::vector<LegendEntry> legend = mapLegend();
-  if (const size_t n = overlay.countByPrediction(); n > 0)  // after "trajectory"
-    legend.insert(legend.begin() + 4, {"placed by the prediction (" + std::to_string(n) + " scans)",
-                                       colors::kByPrediction, LegendEntry::Symbol::Line, 3});
+  if (const size_t n = overlay.countByPrediction(); n > 0)
+  {
+    auto at = std::find_if(legend.begin(), legend.end(), [](const LegendEntry& e) { return e.label == "trajectory"; });
+    legend.insert(at == legend.end() ? at : at + 1, {"placed by the prediction (" + std::to_string(n) + " scans)",
+                                                     colors::kByPrediction, LegendEntry::Symbol::Line, 3});
+  }
   l.scale_bar = drawLegendAndScaleBar(img, view, legend, &l.legend);
   if (layout) *layout = l;
   return img;

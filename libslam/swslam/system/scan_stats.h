@@ -28,6 +28,9 @@ struct ScanStats
   size_t switched_off = 0;  ///< robustified edges the latest optimization for this scan switched off
   int ambiguous = 0;      ///< directions the scan's match could not decide (TrackingStep::ambiguous)
   int prior_decided = 0;  ///< of those, the ones the prediction decided (TrackingStep::prior_decided)
+
+  /** The prediction, not the scans alone, placed this scan: by fallback or along a direction. */
+  bool placedByPrediction() const { return tracking::isFallback(source) || prior_decided > 0; }
 };
 
 /** stats.csv text: a header line, then one line per scan. */

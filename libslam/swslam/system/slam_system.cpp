@@ -170,7 +170,7 @@ void SlamSystem::trackOne(const sensor::ScanInput& input, size_t index)
     if (step.new_keyframe) keyframe_times_.push_back(row.timestamp);
     status_.scans++;
     status_.nodes = tracker_.keyframes().size();
-    if (step.source == tracking::TrackingSource::Odometry || step.source == tracking::TrackingSource::ConstantMotion)
+    if (tracking::isFallback(step.source))
       status_.fallbacks++;
     status_.last_source = step.source;
     status_.last_match = step.match.status;

@@ -45,6 +45,11 @@ enum class TrackingSource
   ConstantMotion,  ///< the match failed, no odometry: previous pose moved by the last motion
 };
 const char* toString(TrackingSource s);
+/** Whether the match failed and a fallback (odometry or constant motion) placed the scan. */
+inline bool isFallback(TrackingSource s)
+{
+  return s == TrackingSource::Odometry || s == TrackingSource::ConstantMotion;
+}
 
 struct TrackingStep
 {
