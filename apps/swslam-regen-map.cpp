@@ -40,6 +40,13 @@ int main(int argc, char** argv)
     const std::string every_scan = run.getValue() + "/trajectory.tum";
     run_data.trajectory = std::filesystem::is_regular_file(every_scan) ? swslam::common::readTum(every_scan)
                                                                        : run_data.keyframes;
+    // ...and mark the scans the prediction placed, from the run's stats.csv (one row per pose).
+    std::string stats_problem;
+    if (std::filesystem::is_regular_file(every_scan))
+      run_data.stats = swslam::app::statsForPictures(run.getValue() + "/stats.csv", run_data.trajectory.size(),
+                                                     stats_problem);
+    if (!stats_problem.empty())
+      std::cerr << "swslam-regen-map: " << stats_problem << "; the pictures mark no scan as placed by the prediction\n";
     swslam::app::RegenReport report;
     const auto grid = swslam::app::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
                                             params.map, params.carmen, &report);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # swslam-regen-map on a short run of lake-short: the map comes back from graph.graph and
-# keyframes.tum; a malformed graph.graph line is reported (it was skipped silently), and a
+# keyframes.tum; a stats.csv that does not match the trajectory is reported (the pictures then
+# mark no scan), a malformed graph.graph line is reported (it was skipped silently), and a
 # malformed keyframes.tum line is an error naming the file and line.
 set -uo pipefail
 src=$1 bin=$2/apps
@@ -14,6 +15,15 @@ log=$src/datasets/lake-short/lake-short.rawlog
 regen() { "$bin/swslam-regen-map" -r "$tmp/run" -i "$log" -c "$src/config/default.ini" -o "$tmp/$1" --no-render; }
 regen clean > "$tmp/clean.log" 2>&1 || { echo "FAIL: clean regen exited $?"; cat "$tmp/clean.log"; fail=1; }
 [[ -s $tmp/clean/map.png ]] || { echo "FAIL: clean regen wrote no map.png"; fail=1; }
+
+# A stats.csv that lost its last row no longer matches the trajectory: said, and the pictures
+# are drawn without marks.
+sed -i '$d' "$tmp/run/stats.csv"
+regen short-stats > "$tmp/stats.log" 2>&1 || { echo "FAIL: regen with a short stats.csv exited $?"; cat "$tmp/stats.log"; fail=1; }
+grep -q "stats.csv' has 79 rows for a trajectory of 80 poses" "$tmp/stats.log" ||
+  { echo "FAIL: the short stats.csv was not reported"; cat "$tmp/stats.log"; fail=1; }
+[[ -s $tmp/short-stats/map.png ]] || { echo "FAIL: no map.png with a short stats.csv"; fail=1; }
+grep -q "stats.csv" "$tmp/clean.log" && { echo "FAIL: the run's own stats.csv was reported"; cat "$tmp/clean.log"; fail=1; }
 
 # An edge line with a word for a number: skipped, and said.
 line=$(grep -n '^EDGE_SE2' "$tmp/run/graph.graph" | head -1 | cut -d: -f1)

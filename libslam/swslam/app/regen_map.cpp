@@ -4,6 +4,7 @@
 #include <swslam/map/builder.h>
 
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 namespace swslam::app
@@ -37,6 +38,30 @@ mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
   }
   if (report) *report = RegenReport{graph.nodeCount(), next};
   return builder.snapshot();
+}
+
+std::vector<system::ScanStats> statsForPictures(const std::string& stats_path, size_t trajectory_poses,
+                                                std::string& problem)
+{
+  problem.clear();
+  if (!std::filesystem::is_regular_file(stats_path)) return {};
+  std::vector<system::ScanStats> rows;
+  try
+  {
+    rows = system::readStatsCsv(stats_path);
+  }
+  catch (const std::runtime_error& e)
+  {
+    problem = e.what();
+    return {};
+  }
+  if (rows.size() != trajectory_poses)
+  {
+    problem = "stats.csv: '" + stats_path + "' has " + std::to_string(rows.size()) + " rows for a trajectory of " +
+              std::to_string(trajectory_poses) + " poses (not the same run?)";
+    return {};
+  }
+  return rows;
 }
 
 }  // namespace swslam::app

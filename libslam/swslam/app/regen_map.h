@@ -6,6 +6,7 @@
 #include <swslam/graph/pose_graph.h>
 #include <swslam/io/carmen_log.h>
 #include <swslam/map/params.h>
+#include <swslam/system/scan_stats.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
@@ -28,5 +29,11 @@ mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
                                               const std::vector<common::StampedPose>& keyframes,
                                               const std::string& log_path, const map::MapParams& params,
                                               const io::CarmenParams& carmen, RegenReport* report = nullptr);
+
+/** The run's stats.csv rows for its pictures (overlayOf marks the scans the prediction
+ * placed), if there is one row per pose of its `trajectory_poses`-pose trajectory. Otherwise
+ * none, and `problem` says why (a missing file leaves it empty: older runs have none). */
+std::vector<system::ScanStats> statsForPictures(const std::string& stats_path, size_t trajectory_poses,
+                                                std::string& problem);
 
 }  // namespace swslam::app

@@ -1,10 +1,14 @@
-// Rebuilding a run's map from its graph and the log, at another resolution.
+// Rebuilding a run's map from its graph and the log, at another resolution; the run's
+// stats.csv for its pictures only when it has a row per trajectory pose.
 #include <swslam/app/regen_map.h>
+#include <swslam/common/atomic_file.h>
 #include <swslam/io/scan_source.h>
 #include <swslam/map/octomap_export.h>
 #include <swslam/system/slam_system.h>
 
 #include <gtest/gtest.h>
+
+#include "test_support.h"
 
 using namespace swslam;
 using namespace swslam::app;
@@ -50,4 +54,24 @@ TEST(RegenMap, RebuildsTheRunsMapAtAFinerResolution)
   {
     EXPECT_NE(std::string(e.what()).find("is not in"), std::string::npos) << e.what();
   }
+}
+
+TEST(RegenMap, StatsForThePicturesOnlyWithOneRowPerTrajectoryPose)
+{
+  const std::string dir = test::tempDir("regen_stats");
+  std::string problem = "stale";
+  EXPECT_TRUE(app::statsForPictures(dir + "/none.csv", 3, problem).empty());
+  EXPECT_EQ(problem, "") << "an older run without stats.csv: nothing to say";
+  std::vector<system::ScanStats> rows(3);
+  rows[1].source = tracking::TrackingSource::Odometry;
+  common::writeTextAtomically(dir + "/stats.csv", system::formatStatsCsv(rows));
+  const auto back = app::statsForPictures(dir + "/stats.csv", 3, problem);
+  EXPECT_EQ(problem, "");
+  ASSERT_EQ(back.size(), 3u);
+  EXPECT_TRUE(back[1].placedByPrediction());
+  EXPECT_TRUE(app::statsForPictures(dir + "/stats.csv", 4, problem).empty());
+  EXPECT_NE(problem.find("has 3 rows for a trajectory of 4 poses"), std::string::npos) << problem;
+  common::writeTextAtomically(dir + "/stats.csv", "scan,oops\n");
+  EXPECT_TRUE(app::statsForPictures(dir + "/stats.csv", 3, problem).empty());
+  EXPECT_NE(problem.find("line 1: not the header"), std::string::npos) << problem;
 }

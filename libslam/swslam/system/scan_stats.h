@@ -36,6 +36,11 @@ struct ScanStats
 /** stats.csv text: a header line, then one line per scan. */
 std::string formatStatsCsv(const std::vector<ScanStats>& rows);
 
+/** The rows of a stats.csv that formatStatsCsv wrote (or one written before its last column,
+ * prior_decided, existed: read as 0). Throws std::runtime_error naming the file, and the line
+ * and column of the first value that is missing, malformed or not finite. */
+std::vector<ScanStats> readStatsCsv(const std::string& path);
+
 /** Average and maximum of the non-zero times of one module [ms]. */
 struct TimeSummary
 {

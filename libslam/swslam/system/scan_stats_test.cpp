@@ -1,5 +1,7 @@
-// stats.csv and Table I: every column of a row in the header's order, and Table I's rows for
+// stats.csv and Table I: every column of a row in the header's order, read back as written
+// (an older file's header too, a bad value named by line and column), and Table I's rows for
 // the scans the matches could not decide.
+#include <swslam/common/atomic_file.h>
 #include <swslam/system/scan_stats.h>
 
 #include <gtest/gtest.h>
@@ -7,6 +9,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "test_support.h"
 
 using namespace swslam;
 
@@ -71,4 +75,83 @@ TEST(ScanStats, TableIGivesTheAmbiguousScansAndThoseThePredictionDecided)
   const std::string t = system::formatRunSummary(s);
   EXPECT_NE(t.find("| Ambiguous scans (weak direction or second peak) | 40 |"), std::string::npos) << t;
   EXPECT_NE(t.find("| of them decided by the prediction along a direction | 3 |"), std::string::npos) << t;
+}
+
+TEST(ScanStats, ReadStatsCsvReadsBackWhatFormatStatsCsvWrote)
+{
+  std::vector<system::ScanStats> rows(3);
+  for (size_t k = 0; k < rows.size(); k++)
+  {
+    rows[k].scan = 10 + k;
+    rows[k].timestamp = 1700000000.5 + k;
+    rows[k].valid_rays = 181;
+    rows[k].match_ms = 0.25 * k;
+    rows[k].keyframe = k;
+  }
+  rows[1].source = tracking::TrackingSource::ConstantMotion;
+  rows[2].source = tracking::TrackingSource::Match;
+  rows[2].ambiguous = 2;
+  rows[2].prior_decided = 1;
+  rows[2].new_node = true;
+  const std::string dir = test::tempDir("scan_stats");
+  common::writeTextAtomically(dir + "/stats.csv", system::formatStatsCsv(rows));
+  const auto back = system::readStatsCsv(dir + "/stats.csv");
+  ASSERT_EQ(back.size(), rows.size());
+  for (size_t k = 0; k < rows.size(); k++)
+  {
+    EXPECT_EQ(back[k].scan, rows[k].scan);
+    EXPECT_NEAR(back[k].timestamp, rows[k].timestamp, 1e-6);
+    EXPECT_EQ(back[k].source, rows[k].source);
+    EXPECT_EQ(back[k].valid_rays, rows[k].valid_rays);
+    EXPECT_DOUBLE_EQ(back[k].match_ms, rows[k].match_ms);
+    EXPECT_EQ(back[k].keyframe, rows[k].keyframe);
+    EXPECT_EQ(back[k].new_node, rows[k].new_node);
+    EXPECT_EQ(back[k].ambiguous, rows[k].ambiguous);
+    EXPECT_EQ(back[k].prior_decided, rows[k].prior_decided);
+    EXPECT_EQ(back[k].placedByPrediction(), rows[k].placedByPrediction());
+  }
+  EXPECT_TRUE(back[1].placedByPrediction());
+  EXPECT_TRUE(back[2].placedByPrediction());
+  EXPECT_FALSE(back[0].placedByPrediction());
+}
+
+TEST(ScanStats, ReadStatsCsvTakesAnOlderHeaderAndNamesTheLineAndColumnOfABadValue)
+{
+  const std::string dir = test::tempDir("scan_stats_bad");
+  const std::string older =
+      "scan,timestamp,source,valid_rays,correspondences,match_sq_residuals,active_sq_residuals,match_ms,"
+      "tracking_ms,graph_ms,map_ms,keyframe,new_node,loops,full_optimization,switched_off,ambiguous\n";
+  const std::string good_row = "0,1700000000.000000,first,436,0,0,0,0.0000,0.1625,0.0223,0.2431,0,1,0,0,0,1\n";
+  common::writeTextAtomically(dir + "/older.csv", older + good_row);
+  const auto rows = system::readStatsCsv(dir + "/older.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].ambiguous, 1);
+  EXPECT_EQ(rows[0].prior_decided, 0);
+
+  auto error = [&](const std::string& text) {
+    common::writeTextAtomically(dir + "/bad.csv", text);
+    try
+    {
+      system::readStatsCsv(dir + "/bad.csv");
+    }
+    catch (const std::runtime_error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error(older + "0,1700000000,guess,436,0,0,0,0,0,0,0,0,1,0,0,0,1\n").find("line 2: column 'source': 'guess'"),
+            std::string::npos);
+  EXPECT_NE(error(older + good_row + "1,nan,match,436,0,0,0,0,0,0,0,0,1,0,0,0,1\n").find("line 3: column 'timestamp'"),
+            std::string::npos);
+  EXPECT_NE(error(older + "0,1700000000,match,-4,0,0,0,0,0,0,0,0,1,0,0,0,1\n").find("column 'valid_rays'"),
+            std::string::npos);
+  EXPECT_NE(error(older + "0,1700000000,match,4,0,0,0,0,0,0,0,0,1,0,0,0,99\n").find("column 'ambiguous'"),
+            std::string::npos);
+  EXPECT_NE(error(older + "0,1700000000,match,4,0\n").find("line 2: 5 values, expected 17"), std::string::npos);
+  EXPECT_NE(error(older + "0,1700000000,match,4,0,0,0,0,0,0,0,0,1,0,0,0,\n").find("column 'ambiguous': ''"),
+            std::string::npos);
+  EXPECT_NE(error("scan,time\n").find("line 1: not the header"), std::string::npos);
+  EXPECT_NE(error("").find("is empty"), std::string::npos);
+  EXPECT_THROW(system::readStatsCsv(dir + "/missing.csv"), std::runtime_error);
 }
