@@ -8,7 +8,7 @@
 #
 # Usage: scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]
 #   harnesses (tests/fuzz/<name>_fuzz.cpp): rawlog_reader carmen_line carmen_log carmen2rawlog
-#   graph_io tum_io relations_io ini_config (default: all)
+#   graph_io tum_io relations_io ini_config stats_csv (default: all)
 # Environment: FUZZ_RSS_MB / FUZZ_MALLOC_MB (2048), FUZZ_TIMEOUT (10 s per input; rawlog_reader
 #   at least 30 s),
 #   FUZZ_FORK=1 (go on after a crash, below), FUZZ_JOBS (build parallelism, default nproc),
@@ -22,7 +22,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-all=(rawlog_reader carmen_line carmen_log carmen2rawlog graph_io tum_io relations_io ini_config)
+all=(rawlog_reader carmen_line carmen_log carmen2rawlog graph_io tum_io relations_io ini_config stats_csv)
 seconds=${1:-600}
 [[ $seconds =~ ^[0-9]+$ && $seconds -gt 0 ]] || { echo "fuzz: SECONDS_PER_HARNESS must be a positive integer, got '$seconds'" >&2; exit 2; }
 shift || true
@@ -67,7 +67,7 @@ dict_of() {
   case $1 in
     carmen_line | carmen_log | carmen2rawlog) echo tests/fuzz/dicts/carmen.dict ;;
     graph_io) echo tests/fuzz/dicts/graph.dict ;;
-    tum_io | relations_io) echo tests/fuzz/dicts/numbers.dict ;;
+    tum_io | relations_io | stats_csv) echo tests/fuzz/dicts/numbers.dict ;;
     rawlog_reader) echo tests/fuzz/dicts/rawlog.dict ;;
     ini_config) echo $out/ini_config.dict ;;
   esac

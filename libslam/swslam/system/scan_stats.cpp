@@ -1,5 +1,7 @@
 #include <swslam/system/scan_stats.h>
 
+#include <mrpt/core/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -83,17 +85,14 @@ std::string formatStatsCsv(const std::vector<ScanStats>& rows)
 {
   std::ostringstream out;
   out << kStatsHeader << "\n";
-  char line[512];
+  // mrpt::format has no length limit: "%.6f" or "%.4f" of a value near 1e300 takes over 300
+  // characters, and a fixed buffer would cut the line (common/tum_io.cpp meets the same).
   for (const ScanStats& r : rows)
-  {
-    std::snprintf(line, sizeof(line),
-                  "%zu,%.6f,%s,%zu,%zu,%.6g,%.6g,%.4f,%.4f,%.4f,%.4f,%zu,%d,%zu,%d,%zu,%d,%d\n", r.scan,
-                  r.timestamp, toString(r.source), r.valid_rays, r.correspondences,
-                  r.match_sq_residuals, r.active_sq_residuals, r.match_ms, r.tracking_ms,
-                  r.graph_ms, r.map_ms, r.keyframe, r.new_node ? 1 : 0, r.loops,
-                  r.full_optimization ? 1 : 0, r.switched_off, r.ambiguous, r.prior_decided);
-    out << line;
-  }
+    out << mrpt::format("%zu,%.6f,%s,%zu,%zu,%.6g,%.6g,%.4f,%.4f,%.4f,%.4f,%zu,%d,%zu,%d,%zu,%d,%d\n", r.scan,
+                        r.timestamp, toString(r.source), r.valid_rays, r.correspondences, r.match_sq_residuals,
+                        r.active_sq_residuals, r.match_ms, r.tracking_ms, r.graph_ms, r.map_ms, r.keyframe,
+                        r.new_node ? 1 : 0, r.loops, r.full_optimization ? 1 : 0, r.switched_off, r.ambiguous,
+                        r.prior_decided);
   return out.str();
 }
 
@@ -102,7 +101,7 @@ std::vector<ScanStats> readStatsCsv(const std::string& path)
   std::ifstream in(path);
   if (!in) throw std::runtime_error("stats.csv: cannot open '" + path + "'");
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error("stats.csv: '" + path + "' is empty");
+  if (!std::getline(in, line)) throw std::runtime_error("stats.csv: '" + path + "' line 1: empty file, no header");
   if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line != kStatsHeader && line != olderStatsHeader())
     throw std::runtime_error("stats.csv: '" + path + "' line 1: not the header '" + kStatsHeader + "'");

@@ -37,8 +37,9 @@ struct ScanStats
 std::string formatStatsCsv(const std::vector<ScanStats>& rows);
 
 /** The rows of a stats.csv that formatStatsCsv wrote (or one written before its last column,
- * prior_decided, existed: read as 0). Throws std::runtime_error naming the file, and the line
- * and column of the first value that is missing, malformed or not finite. */
+ * prior_decided, existed: read as 0). Throws std::runtime_error "stats.csv: cannot open
+ * '<path>'", or "stats.csv: '<path>' line L: ..." naming the header's problem or the column
+ * of the first value that is missing, malformed or not finite. */
 std::vector<ScanStats> readStatsCsv(const std::string& path);
 
 /** Average and maximum of the non-zero times of one module [ms]. */

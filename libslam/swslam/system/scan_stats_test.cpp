@@ -113,6 +113,16 @@ TEST(ScanStats, ReadStatsCsvReadsBackWhatFormatStatsCsvWrote)
   EXPECT_TRUE(back[1].placedByPrediction());
   EXPECT_TRUE(back[2].placedByPrediction());
   EXPECT_FALSE(back[0].placedByPrediction());
+
+  // Values of over 300 characters each are written whole (a line buffer would cut them).
+  rows[0].timestamp = 1e300;
+  rows[0].match_ms = 1e300;
+  common::writeTextAtomically(dir + "/huge.csv", system::formatStatsCsv(rows));
+  const auto huge = system::readStatsCsv(dir + "/huge.csv");
+  ASSERT_EQ(huge.size(), rows.size());
+  EXPECT_DOUBLE_EQ(huge[0].timestamp, 1e300);
+  EXPECT_DOUBLE_EQ(huge[0].match_ms, 1e300);
+  EXPECT_EQ(huge[0].prior_decided, rows[0].prior_decided);
 }
 
 TEST(ScanStats, ReadStatsCsvTakesAnOlderHeaderAndNamesTheLineAndColumnOfABadValue)
@@ -152,6 +162,6 @@ TEST(ScanStats, ReadStatsCsvTakesAnOlderHeaderAndNamesTheLineAndColumnOfABadValu
   EXPECT_NE(error(older + "0,1700000000,match,4,0,0,0,0,0,0,0,0,1,0,0,0,\n").find("column 'ambiguous': ''"),
             std::string::npos);
   EXPECT_NE(error("scan,time\n").find("line 1: not the header"), std::string::npos);
-  EXPECT_NE(error("").find("is empty"), std::string::npos);
+  EXPECT_NE(error("").find("line 1: empty file"), std::string::npos);
   EXPECT_THROW(system::readStatsCsv(dir + "/missing.csv"), std::runtime_error);
 }
