@@ -38,11 +38,11 @@ int main(int argc, char** argv)
     run_data.keyframes = swslam::common::readTum(run.getValue() + "/keyframes.tum");
     // The pictures draw the run's every-scan trajectory when it is there, else the keyframes.
     const std::string every_scan = run.getValue() + "/trajectory.tum";
-    run_data.trajectory = std::filesystem::is_regular_file(every_scan) ? swslam::common::readTum(every_scan)
-                                                                       : run_data.keyframes;
+    const bool has_every_scan = std::filesystem::is_regular_file(every_scan);
+    run_data.trajectory = has_every_scan ? swslam::common::readTum(every_scan) : run_data.keyframes;
     // ...and mark the scans the prediction placed, from the run's stats.csv (one row per pose).
     std::string stats_problem;
-    if (std::filesystem::is_regular_file(every_scan))
+    if (has_every_scan)
       run_data.stats = swslam::app::statsForPictures(run.getValue() + "/stats.csv", run_data.trajectory.size(),
                                                      stats_problem);
     if (!stats_problem.empty())

@@ -68,8 +68,8 @@ struct Layer
   LegendEntry::Symbol symbol;
 };
 using S = LegendEntry::Symbol;
-constexpr size_t kTrajectoryLayer = 0, kByPredictionLayer = 1, kKeyframeLayer = 3, kLoopLayer = 6,
-                 kSwitchedOffLayer = 7;
+constexpr size_t kTrajectoryLayer = 0, kByPredictionLayer = 1, kNeighbourLayer = 2, kKeyframeLayer = 3,
+                 kConsecutiveLayer = 4, kPriorLayer = 5, kLoopLayer = 6, kSwitchedOffLayer = 7;
 const std::array<Layer, 8> kLayers = {{{"trajectory", mrpt::img::TColor(255, 185, 90), 8, S::Line},
                                        {"placed by the prediction", colors::kByPrediction, 8, S::Line},
                                        {"dense neighbour edge", colors::kNeighbour, 5, S::Line},
@@ -84,12 +84,12 @@ size_t layerOf(const OverlayEdge& e)
   if (e.switched_off) return kSwitchedOffLayer;
   switch (e.look)
   {
-    case EdgeLook::Consecutive: return 4;
-    case EdgeLook::DenseNeighbour: return 2;
-    case EdgeLook::Prior: return 5;
+    case EdgeLook::Consecutive: return kConsecutiveLayer;
+    case EdgeLook::DenseNeighbour: return kNeighbourLayer;
+    case EdgeLook::Prior: return kPriorLayer;
     case EdgeLook::Loop: return kLoopLayer;
   }
-  return 4;
+  return kConsecutiveLayer;
 }
 
 /** The GL picture of the plot area. */
