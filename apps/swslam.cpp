@@ -23,6 +23,9 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> odom_topic("", "odom-topic", "Bags: the nav_msgs/Odometry topic (default: the only one, if any)",
                                           false, "", "TOPIC", cmd);
   TCLAP::ValueArg<size_t> max_scans("", "max-scans", "Stop after N scans (0: all)", false, 0, "N", cmd);
+  TCLAP::ValueArg<size_t> throttle("", "throttle-scans",
+                                   "Use one scan in N (the first, then every Nth; the odometry of those left out is kept)",
+                                   false, 1, "N", cmd);
   TCLAP::ValueArg<double> rate("", "realtime-factor", "Pace the replay at this multiple of the log's rate (0: as fast as possible)",
                                false, 0, "X", cmd);
   TCLAP::SwitchArg deterministic("d", "deterministic", "One thread, fixed order: repeatable results", cmd);
@@ -40,6 +43,7 @@ int main(int argc, char** argv)
   o.scan_topic = scan_topic.getValue();
   o.odom_topic = odom_topic.getValue();
   o.max_scans = max_scans.getValue();
+  o.throttle_scans = throttle.getValue();
   o.realtime_factor = rate.getValue();
   o.deterministic = deterministic.getValue();
   o.use_odometry = !no_odometry.getValue();

@@ -9,6 +9,7 @@
 #include <swslam/eval/report.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/io/scan_source.h>
+#include <swslam/io/throttled_scan_source.h>
 #include <swslam/system/slam_system.h>
 
 #include <chrono>
@@ -85,7 +86,10 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
     if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
     params = system::loadSystemParams(config);
     if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
-    source = io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label, opts.scan_topic, opts.odom_topic}, params.carmen);
+    source = io::throttleScans(
+        io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label, opts.scan_topic, opts.odom_topic},
+                           params.carmen),
+        opts.throttle_scans);
     folder.emplace(opts.output);
     if (folder->staleRemoved() > 0)
       err << "swslam: removed " << folder->staleRemoved() << " temporary file(s) that a killed run left in "

@@ -23,6 +23,7 @@ struct OfflineRunOptions
   bool progress = true;      ///< progress bar (drawn only on a terminal)
   bool render = true;        ///< render.png
   size_t max_scans = 0;      ///< stop after this many scans; 0: all
+  size_t throttle_scans = 1;  ///< use one scan in this many (io::ThrottledScanSource); 1: all
   double realtime_factor = 0;  ///< > 0: replay paced at this multiple of the log's own rate
 };
 
