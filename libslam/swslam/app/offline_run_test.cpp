@@ -283,3 +283,26 @@ TEST(OfflineRun, ALogWhoseStampsMostlyCannotBeUsedIsAnInputError)
   EXPECT_NE(err.str().find("59 of the 60 scans read were skipped for their timestamps"), std::string::npos) << err.str();
   std::filesystem::remove_all(dir);
 }
+
+TEST(OfflineRun, ThrottledScansAreOneInNOfTheLogAndTheSummarySaysSo)
+{
+  const std::string dir = test::tempDir("offline_throttle");
+  OfflineRunOptions o = quickLakeRun(dir);
+  o.max_scans = 40;  // scans used
+  std::ostringstream out0, err0;
+  ASSERT_EQ(runOffline(o, out0, err0), kExitOk) << err0.str();
+  const auto every = common::readTum(o.output + "/trajectory.tum");
+  o.throttle_scans = 4;
+  o.max_scans = 10;
+  std::ostringstream out, err;
+  ASSERT_EQ(runOffline(o, out, err), kExitOk) << err.str();
+  const auto kept = common::readTum(o.output + "/trajectory.tum");
+  ASSERT_EQ(kept.size(), 10u);
+  for (size_t k = 0; k < kept.size(); k++) EXPECT_DOUBLE_EQ(kept[k].t, every[4 * k].t) << k;
+  EXPECT_NE(out.str().find("one scan in 4"), std::string::npos) << out.str();
+  o.throttle_scans = 0;
+  std::ostringstream out_zero, err_zero;
+  EXPECT_EQ(runOffline(o, out_zero, err_zero), kExitUsage);
+  EXPECT_NE(err_zero.str().find("N must be at least 1"), std::string::npos) << err_zero.str();
+  std::filesystem::remove_all(dir);
+}
