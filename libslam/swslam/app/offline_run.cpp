@@ -58,7 +58,8 @@ size_t feedAll(const OfflineRunOptions& opts, io::ScanSource& source, system::Sl
       const system::FeedResult r = slam.feed(std::move(in));
       read++;
       if (r.status == system::FeedStatus::Stopped) break;
-      if (!r.message.empty()) skips.report(r.status, read - 1, r.message);
+      // Numbered as in the log: the scans used are its scans 0, N, 2N...
+      if (!r.message.empty()) skips.report(r.status, (read - 1) * opts.throttle_scans, r.message);
       if (!bar.due()) continue;  // the status is gathered only when the bar redraws
       const system::SystemStatus st = slam.status();
       bar.update(source.fractionRead(), st.scans,

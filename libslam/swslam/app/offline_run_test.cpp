@@ -300,6 +300,12 @@ TEST(OfflineRun, ThrottledScansAreOneInNOfTheLogAndTheSummarySaysSo)
   ASSERT_EQ(kept.size(), 10u);
   for (size_t k = 0; k < kept.size(); k++) EXPECT_DOUBLE_EQ(kept[k].t, every[4 * k].t) << k;
   EXPECT_NE(out.str().find("one scan in 4"), std::string::npos) << out.str();
+  // A warning names the scan by its index in the log.
+  o.input = dir + "/one-bad.rawlog";
+  writeRestampedLake(o.input, 60, [](size_t k, double t) { return k == 32 ? 1e12 : t; });
+  std::ostringstream out_bad, err_bad;
+  EXPECT_EQ(runOffline(o, out_bad, err_bad), kExitOk) << err_bad.str();
+  EXPECT_NE(err_bad.str().find("skipped input scan 32: timestamp 1e+12 s"), std::string::npos) << err_bad.str();
   o.throttle_scans = 0;
   std::ostringstream out_zero, err_zero;
   EXPECT_EQ(runOffline(o, out_zero, err_zero), kExitUsage);
