@@ -94,6 +94,13 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
   const correlative::SearchedMatch s = correlative::searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_,
                                          steady_.costPerM2(correlative_));
   step.searched = true;
+  // A first match that stayed on its prediction lost only overlap: an object close in front
+  // of the sensor hides the surroundings, and the search may put that object on a wall of the
+  // map far away. The search's match replaces it only if it explains more of the scan than a
+  // match that only stands in for a failed or moved one must; else the first match stays.
+  if (s.replaced && why == correlative::SearchTrigger::LowOverlap && s.match.ok() &&
+      s.match.inliers < tracking_.overlap_search_min_inlier_fraction * s.match.cur_valid_rays)
+    return m;
   if (s.match.ok() && s.match.inliers < tracking_.searched_min_inlier_fraction * s.match.cur_valid_rays)
   {
     // Neither the prediction nor the search explains the scan: an odd scan (someone in front

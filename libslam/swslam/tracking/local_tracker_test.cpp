@@ -286,11 +286,12 @@ namespace
  * front of the sensor and hides most of the room (the next keyframe then holds the door).
  * Returns, for that scan and the next two, whether it was searched, and the worst position
  * error among them [m]. */
-std::pair<std::vector<bool>, double> doorSwingsShut(const correlative::CorrelativeParams& cp, int shut)
+std::pair<std::vector<bool>, double> doorSwingsShut(const correlative::CorrelativeParams& cp, int shut,
+                                                    const TrackingParams& tp = TrackingParams())
 {
   const auto room = test::roomWorld();
   std::mt19937 rng(12);
-  LocalTracker tracker(TrackingParams(), plicp::PlicpParams(), cp);
+  LocalTracker tracker(tp, plicp::PlicpParams(), cp);
   std::vector<bool> searched;
   double worst = 0;
   for (int k = 0; k <= shut + 2; k++)
@@ -322,6 +323,21 @@ TEST(LocalTracker, AProvenPredictionIsKeptWhenTheSurroundingsChange)
   EXPECT_TRUE(doorSwingsShut(cp, 5).first.front());
   cp.trust_prediction_after = 0;
   EXPECT_TRUE(doorSwingsShut(cp, 30).first.front());
+}
+
+TEST(LocalTracker, ADoorInFrontIsNotPutOnAWallElsewhere)
+{
+  // Searched (not yet a proven prediction), the door shut at scan 20 hides most of the room:
+  // its first match stays on the prediction with few inliers, and the search's best pose puts
+  // the door on a wall 2.4 m away with few inliers too. That pose replaces a match on its
+  // prediction only with overlap_search_min_inlier_fraction of the rays: the first match
+  // stays.
+  correlative::CorrelativeParams cp;
+  cp.trust_prediction_after = 0;
+  TrackingParams tp;  // overlap_search_min_inlier_fraction = 0.2
+  EXPECT_LT(doorSwingsShut(cp, 20, tp).second, 0.1);
+  tp.overlap_search_min_inlier_fraction = tp.searched_min_inlier_fraction;  // no higher bar
+  EXPECT_GT(doorSwingsShut(cp, 20, tp).second, 1.0);
 }
 
 TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)

@@ -31,6 +31,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   MRPT_LOAD_CONFIG_VAR_CS(ambiguity_take_prior, bool);
   MRPT_LOAD_CONFIG_VAR_CS(unobservable_min_rays, int);
   MRPT_LOAD_CONFIG_VAR_CS(searched_min_inlier_fraction, double);
+  MRPT_LOAD_CONFIG_VAR_CS(overlap_search_min_inlier_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(unmatched_scans_skipped, int);
   MRPT_LOAD_CONFIG_VAR_CS(search_first_match, bool);
   auto require = [&](bool ok, const char* what) {
@@ -51,6 +52,8 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(unobservable_min_rays >= 0, "unobservable_min_rays must be >= 0");
   require(searched_min_inlier_fraction >= 0 && searched_min_inlier_fraction <= 1,
           "searched_min_inlier_fraction must be in [0, 1]");
+  require(overlap_search_min_inlier_fraction >= 0 && overlap_search_min_inlier_fraction <= 1,
+          "overlap_search_min_inlier_fraction must be in [0, 1]");
   require(unmatched_scans_skipped >= 0, "unmatched_scans_skipped must be >= 0");
 }
 
@@ -74,6 +77,7 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a match direction fewer rays of either scan face is unobservable: the prediction decides (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(searched_min_inlier_fraction, "a match chosen after the search counts only with this fraction of the valid rays as inliers (0: any)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(overlap_search_min_inlier_fraction, "a match the search found replaces one that stayed on its prediction (searched for its little overlap) only with this fraction of the valid rays as inliers");
   MRPT_SAVE_CONFIG_VAR_COMMENT(search_first_match, "the first match of a run without odometry is always searched (its prediction is a guess)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(unmatched_scans_skipped, "an unmatched scan past the keyframe threshold is no node while at most this many in a row were unmatched (0: always a node)");
 }

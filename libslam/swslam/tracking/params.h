@@ -37,6 +37,11 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
    * least this fraction of the scan's valid rays are its inliers; else the scan is unmatched
    * and the prediction carries it (0: any match counts). */
   double searched_min_inlier_fraction = 0.1;
+  /** When the first match stayed on its prediction and was searched only for its little
+   * overlap (an object in front of the sensor, a door), a match the search found elsewhere
+   * replaces it only with at least this fraction of the valid rays as inliers; else the first
+   * match stays. */
+  double overlap_search_min_inlier_fraction = 0.2;
   /** An unmatched scan past the keyframe threshold becomes no node while at most this many
    * scans in a row were unmatched: the next scan is matched against the last keyframe again,
    * and an odd scan (someone in front of the sensor) never joins the graph (0: always a node). */
