@@ -174,10 +174,24 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   }
   std::string text = "# swslam on " + source->describe() + " (" +
                      (opts.deterministic ? "deterministic" : "threaded") + ")\n" + system::formatRunSummary(summary);
-  folder->clearPreviousRun(runOutputFiles());
-  const auto problems = writeRunOutputs(opts.output, results, grid, params.map, text, opts.render);
-  for (const map::OutputProblem& p : problems) err << "swslam: could not write " << p.file << ": " << p.message << "\n";
-  if (!problems.empty() && code == kExitOk) code = kExitOutputError;
+  OutputFolder::Replaced written;
+  try
+  {
+    written = folder->replaceRun(runOutputFiles(), [&](const std::string& dir) {
+      return writeRunOutputs(dir, results, grid, params.map, text, opts.render);
+    });
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: " << e.what() << "\n";
+    return kExitOutputError;
+  }
+  for (const map::OutputProblem& p : written.problems)
+    err << "swslam: could not write " << p.file << ": " << p.message << "\n";
+  if (written.kept_previous)
+    err << "swslam: the previous run's outputs in " << opts.output << " are kept; what this run wrote is in "
+        << (std::filesystem::path(opts.output) / OutputFolder::kUnfinished).string() << "/\n";
+  if (!written.problems.empty() && code == kExitOk) code = kExitOutputError;
   out << text << "# outputs in " << opts.output << "/ (map.png, " << (opts.render ? "render.png, " : "")
       << "trajectory.tum, stats.csv, summary.md)\n";
   return code;

@@ -17,6 +17,12 @@ namespace swslam::app
 {
 namespace fs = std::filesystem;
 
+namespace
+{
+/** The staging folder of replaceRun: a killed run may leave it. */
+constexpr const char* kStaging = ".swslam-staging";
+}  // namespace
+
 OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
 {
   const auto fail = [&](const std::string& why) {
@@ -44,6 +50,12 @@ OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
   for (const auto& entry : fs::directory_iterator(dir, ec))
     if (entry.is_regular_file() && common::isAtomicTemporary(entry.path().filename().string()) && fs::remove(entry.path(), ec))
       stale_removed_++;
+  const fs::path staging = fs::path(dir) / kStaging;
+  if (fs::exists(staging, ec))
+  {
+    const auto removed = fs::remove_all(staging, ec);
+    if (removed != static_cast<std::uintmax_t>(-1) && removed > 0) stale_removed_ += removed - 1;  // its files, not itself
+  }
 }
 
 OutputFolder::~OutputFolder()
@@ -57,6 +69,46 @@ void OutputFolder::clearPreviousRun(const std::vector<std::string>& names)
   cleared_ = true;
   std::error_code ec;
   for (const auto& name : names) fs::remove(fs::path(dir_) / name, ec);
+}
+
+OutputFolder::Replaced OutputFolder::replaceRun(
+    const std::vector<std::string>& names,
+    const std::function<std::vector<map::OutputProblem>(const std::string& dir)>& write)
+{
+  const fs::path dir(dir_), staging = dir / kStaging, unfinished = dir / kUnfinished;
+  std::error_code ec;
+  fs::remove_all(staging, ec);
+  if (ec || !fs::create_directory(staging, ec) || ec)
+    throw std::runtime_error("output folder '" + dir_ + "': cannot make " + kStaging +
+                             (ec ? ": " + ec.message() : std::string()));
+  Replaced out;
+  out.problems = write(staging.string());
+  bool previous = false;
+  for (const auto& name : names) previous = previous || fs::exists(dir / name, ec);
+  if (!out.problems.empty() && previous)
+  {
+    // Keep the previous run's outputs; this run's go beside them, whole.
+    fs::remove_all(unfinished, ec);
+    fs::rename(staging, unfinished, ec);
+    if (ec) throw std::runtime_error("output folder '" + dir_ + "': cannot move " + kStaging + " to " + kUnfinished + ": " + ec.message());
+    out.kept_previous = true;
+    return out;
+  }
+  cleared_ = true;
+  for (const auto& name : names)
+  {
+    const fs::path staged = staging / name, target = dir / name;
+    if (fs::exists(staged, ec))
+    {
+      fs::rename(staged, target, ec);
+      if (ec) out.problems.push_back({name, "cannot move it into the folder: " + ec.message()});
+    }
+    else
+      fs::remove(target, ec);  // the previous run's, which this run did not write
+  }
+  fs::remove_all(staging, ec);
+  fs::remove_all(unfinished, ec);
+  return out;
 }
 
 }  // namespace swslam::app

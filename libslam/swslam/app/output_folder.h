@@ -1,9 +1,13 @@
 #pragma once
 // A run's output folder, held for the run: created if missing and checked writable before any
 // work, locked against a second run writing into it at the same time, and cleared of the
-// temporary files a killed run left. Just before a run writes its outputs, the previous run's
-// outputs are removed, so that the folder never holds a mix of two runs.
+// temporary files a killed run left. A run's outputs replace the previous run's as one
+// (replaceRun), so that the folder never holds a mix of two runs and a run that could not
+// write all of its outputs does not destroy the previous run's.
 
+#include <swslam/map/outputs.h>
+
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +29,29 @@ class OutputFolder
   /** Removes the files of `names` that a previous run left (once: later calls do nothing,
    * the files are this run's). */
   void clearPreviousRun(const std::vector<std::string>& names);
+
+  /** Where replaceRun leaves a run's outputs that could not all be written while the folder
+   * holds a previous run's. */
+  static constexpr const char* kUnfinished = "unfinished-run";
+
+  /** What replaceRun did. */
+  struct Replaced
+  {
+    std::vector<map::OutputProblem> problems;  ///< the outputs `write` could not write
+    /** The previous run's outputs were kept, and this run's are in kUnfinished (some failed
+     * while the folder held the previous run's). */
+    bool kept_previous = false;
+  };
+
+  /** Writes a run's outputs (files named among `names`) as one: `write` writes them into a
+   * staging folder inside this one and returns the outputs it could not write. If it wrote
+   * them all, or the folder holds none of `names`, they replace the previous run's: each file
+   * renamed into the folder, the previous run's files of `names` it did not write removed, and
+   * a kUnfinished folder left by an earlier failure removed. Otherwise the previous run's
+   * outputs stay as they were and this run's go to kUnfinished (replacing an older one). Throws
+   * std::runtime_error naming the folder if the staging folder cannot be made or emptied. */
+  Replaced replaceRun(const std::vector<std::string>& names,
+                      const std::function<std::vector<map::OutputProblem>(const std::string& dir)>& write);
 
   /** Temporary files removed when the folder was taken (left by a killed run). */
   size_t staleRemoved() const { return stale_removed_; }

@@ -1,5 +1,5 @@
 // The output folder: taken by one run at a time, its killed run's temporary files removed,
-// the previous run's outputs removed once, just before this run writes.
+// the previous run's outputs removed once, just before this run writes, or replaced as one.
 #include <swslam/app/output_folder.h>
 
 #include <gtest/gtest.h>
@@ -67,4 +67,85 @@ TEST(OutputFolder, AKilledRunsTemporariesGoAtOnceThePreviousOutputsJustBeforeWri
   touch(dir + "/trajectory.tum");  // this run's own
   f.clearPreviousRun({"trajectory.tum"});
   EXPECT_TRUE(fs::exists(dir + "/trajectory.tum")) << "cleared once only";
+}
+
+namespace
+{
+/** A writer of `files` into its folder, failing on `fails` (not written). */
+std::function<std::vector<map::OutputProblem>(const std::string&)> writer(const std::vector<std::string>& files,
+                                                                        const std::string& fails = "")
+{
+  return [=](const std::string& dir) {
+    std::vector<map::OutputProblem> problems;
+    for (const auto& f : files)
+      if (f == fails)
+        problems.push_back({f, "No space left on device"});
+      else
+        std::ofstream(dir + "/" + f) << "new";
+    return problems;
+  };
+}
+std::string contentOf(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string s;
+  std::getline(in, s);
+  return s;
+}
+}  // namespace
+
+TEST(OutputFolder, ARunThatWritesEverythingReplacesThePreviousOneWhole)
+{
+  const std::string dir = test::tempDir("output_folder_replace");
+  for (const char* name : {"trajectory.tum", "map.png", "map.bt", "notes.txt"}) touch(dir + "/" + name);
+  fs::create_directory(dir + "/" + OutputFolder::kUnfinished);
+  OutputFolder f(dir);
+  const auto r = f.replaceRun({"trajectory.tum", "map.png", "map.bt"}, writer({"trajectory.tum", "map.png"}));
+  EXPECT_TRUE(r.problems.empty());
+  EXPECT_FALSE(r.kept_previous);
+  EXPECT_EQ(contentOf(dir + "/trajectory.tum"), "new");
+  EXPECT_EQ(contentOf(dir + "/map.png"), "new");
+  EXPECT_FALSE(fs::exists(dir + "/map.bt")) << "the previous run's output this run did not write";
+  EXPECT_TRUE(fs::exists(dir + "/notes.txt")) << "only the named outputs go";
+  EXPECT_FALSE(fs::exists(dir + "/" + OutputFolder::kUnfinished)) << "an earlier failure's outputs are older";
+  EXPECT_FALSE(fs::exists(dir + "/.swslam-staging"));
+}
+
+TEST(OutputFolder, ARunThatCannotWriteAnOutputKeepsThePreviousRunAndPutsItsOwnAside)
+{
+  const std::string dir = test::tempDir("output_folder_keep");
+  for (const char* name : {"trajectory.tum", "map.png"}) touch(dir + "/" + name);
+  OutputFolder f(dir);
+  const auto r = f.replaceRun({"trajectory.tum", "map.png"}, writer({"trajectory.tum", "map.png"}, "map.png"));
+  ASSERT_EQ(r.problems.size(), 1u);
+  EXPECT_EQ(r.problems[0].file, "map.png");
+  EXPECT_TRUE(r.kept_previous);
+  EXPECT_EQ(contentOf(dir + "/trajectory.tum"), "x") << "the previous run's, untouched";
+  EXPECT_EQ(contentOf(dir + "/map.png"), "x");
+  const std::string aside = dir + "/" + OutputFolder::kUnfinished;
+  EXPECT_EQ(contentOf(aside + "/trajectory.tum"), "new") << "what this run wrote is kept too";
+  EXPECT_FALSE(fs::exists(aside + "/map.png"));
+  EXPECT_FALSE(fs::exists(dir + "/.swslam-staging"));
+}
+
+TEST(OutputFolder, AFirstRunThatCannotWriteAnOutputKeepsTheOthersInPlace)
+{
+  const std::string dir = test::tempDir("output_folder_first");
+  OutputFolder f(dir);
+  const auto r = f.replaceRun({"trajectory.tum", "map.png"}, writer({"trajectory.tum", "map.png"}, "map.png"));
+  EXPECT_EQ(r.problems.size(), 1u);
+  EXPECT_FALSE(r.kept_previous) << "no previous run to keep";
+  EXPECT_EQ(contentOf(dir + "/trajectory.tum"), "new");
+  EXPECT_FALSE(fs::exists(dir + "/" + OutputFolder::kUnfinished));
+}
+
+TEST(OutputFolder, AKilledRunsStagingFolderGoesWhenTheFolderIsTaken)
+{
+  const std::string dir = test::tempDir("output_folder_staging");
+  fs::create_directory(dir + "/.swslam-staging");
+  touch(dir + "/.swslam-staging/map.png");
+  touch(dir + "/.swslam-staging/trajectory.tum");
+  OutputFolder f(dir);
+  EXPECT_EQ(f.staleRemoved(), 2u);
+  EXPECT_FALSE(fs::exists(dir + "/.swslam-staging"));
 }
