@@ -59,8 +59,9 @@ class ScanSource
 std::string noScanReason(const ScanSourceStats& stats, const std::string& sensor_label);
 
 /** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), as a ROS bag if
- * it is one (isBagFile), else as a rawlog. Throws std::runtime_error if it cannot be opened, or
- * if topics are given for an input that is not a bag. */
+ * it is one (isBagFile), else as a rawlog. Throws std::runtime_error if it cannot be opened, if
+ * it is a pipe, socket or device (a FIFO would block the open), or if topics are given for an
+ * input that is not a bag. */
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
                                            const CarmenParams& carmen);
 

@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include "test_support.h"
+
 using namespace swslam;
 using namespace swslam::io;
 using mrpt::poses::CPose2D;
@@ -180,5 +184,25 @@ TEST(ScanSource, MissingFileIsAnErrorNamingIt)
   catch (const std::runtime_error& e)
   {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/x.rawlog"), std::string::npos);
+  }
+}
+
+TEST(ScanSource, APipeOrADeviceIsAnErrorNotAWait)
+{
+  // A FIFO with no writer would block the open for ever (and a signal would not end it).
+  const std::string fifo = test::tempDir("scan_source_fifo") + "/input.log";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/null")})
+  {
+    try
+    {
+      openScanSource(path, ScanSourceOptions{}, CarmenParams());
+      FAIL() << path << ": no error";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("'" + path + "' is not a file but a pipe, socket or device"), std::string::npos)
+          << e.what();
+    }
   }
 }
