@@ -5,8 +5,11 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <cstddef>
 #include <cstring>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace swslam::cli
 {
@@ -20,5 +23,15 @@ inline std::optional<int> parse(TCLAP::CmdLine& cmd, int argc, char** argv)
         !std::strcmp(argv[i], "--version"))
       return 0;
   return 1;
+}
+
+/** A count option's value (read as a signed number, so that "-3" is not taken for 2^64 - 3),
+ * checked to be at least `min`. Throws std::invalid_argument naming the option otherwise. */
+inline size_t count(TCLAP::ValueArg<long long>& arg, long long min)
+{
+  if (arg.getValue() < min)
+    throw std::invalid_argument("--" + arg.getName() + " must be at least " + std::to_string(min) + ", got " +
+                                std::to_string(arg.getValue()));
+  return static_cast<size_t>(arg.getValue());
 }
 }  // namespace swslam::cli

@@ -24,7 +24,7 @@ int main(int argc, char** argv)
     TCLAP::ValueArg<std::string> alpha("", "alpha", "kernel shape in [-inf, 2] (robustified edges)",
                                        false, "", "A", cmd);
     TCLAP::ValueArg<double> c("", "c", "kernel scale (standard deviations)", false, 0, "C", cmd);
-    TCLAP::ValueArg<size_t> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
+    TCLAP::ValueArg<long long> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
     using swslam::graph::KernelSchedule;
     std::vector<std::string> schedules;
     for (const auto s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive})
@@ -49,7 +49,7 @@ int main(int argc, char** argv)
         throw std::invalid_argument("--alpha '" + alpha.getValue() + "' is not a number");
     }
     if (c.isSet()) params.kernel_c = c.getValue();
-    if (iters.isSet()) params.max_iterations = iters.getValue();
+    if (iters.isSet()) params.max_iterations = swslam::cli::count(iters, 0);
     if (kernel.isSet()) params.kernel_schedule = *swslam::graph::kernelScheduleFromName(kernel.getValue());
     params.check();
 

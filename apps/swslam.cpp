@@ -22,8 +22,8 @@ int main(int argc, char** argv)
                                           false, "", "TOPIC", cmd);
   TCLAP::ValueArg<std::string> odom_topic("", "odom-topic", "Bags: the nav_msgs/Odometry topic (default: the only one, if any)",
                                           false, "", "TOPIC", cmd);
-  TCLAP::ValueArg<size_t> max_scans("", "max-scans", "Stop after N scans (0: all)", false, 0, "N", cmd);
-  TCLAP::ValueArg<size_t> throttle("", "throttle-scans",
+  TCLAP::ValueArg<long long> max_scans("", "max-scans", "Stop after N scans (0: all)", false, 0, "N", cmd);
+  TCLAP::ValueArg<long long> throttle("", "throttle-scans",
                                    "Use one scan in N (the first, then every Nth; the odometry of those left out is kept)",
                                    false, 1, "N", cmd);
   TCLAP::ValueArg<double> rate("", "realtime-factor", "Pace the replay at this multiple of the log's rate (0: as fast as possible)",
@@ -42,8 +42,16 @@ int main(int argc, char** argv)
   o.sensor_label = label.getValue();
   o.scan_topic = scan_topic.getValue();
   o.odom_topic = odom_topic.getValue();
-  o.max_scans = max_scans.getValue();
-  o.throttle_scans = throttle.getValue();
+  try
+  {
+    o.max_scans = swslam::cli::count(max_scans, 0);
+    o.throttle_scans = swslam::cli::count(throttle, 1);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    std::cerr << "swslam: " << e.what() << "\n";
+    return 1;
+  }
   o.realtime_factor = rate.getValue();
   o.deterministic = deterministic.getValue();
   o.use_odometry = !no_odometry.getValue();
