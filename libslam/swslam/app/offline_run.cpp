@@ -12,7 +12,9 @@
 #include <swslam/io/throttled_scan_source.h>
 #include <swslam/system/slam_system.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <malloc.h>
 #include <filesystem>
 #include <optional>
@@ -52,8 +54,13 @@ size_t feedAll(const OfflineRunOptions& opts, io::ScanSource& source, system::Sl
         const double t = mrpt::Clock::toDouble(in.observation->timestamp);
         if (!first_stamp) first_stamp = t;
         const double due = std::max(0.0, (t - *first_stamp) / opts.realtime_factor);
-        std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                               std::chrono::duration<double>(std::min(due, 3600.0))));
+        const auto due_at = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                     std::chrono::duration<double>(std::min(due, 3600.0)));
+        // In slices, so that a signal stops a slow replay at once.
+        for (auto now = std::chrono::steady_clock::now(); now < due_at && !stop.requested();
+             now = std::chrono::steady_clock::now())
+          std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(due_at - now, std::chrono::milliseconds(100)));
+        if (stop.requested()) break;
       }
       const system::FeedResult r = slam.feed(std::move(in));
       read++;
@@ -83,6 +90,9 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   std::optional<OutputFolder> folder;
   try
   {
+    if (!(std::isfinite(opts.realtime_factor) && opts.realtime_factor >= 0))
+      throw std::invalid_argument("--realtime-factor must be a finite number, at least 0 (0: as fast as possible), got " +
+                                  std::to_string(opts.realtime_factor));
     const std::string config = configOrDefault(opts.config);
     if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
     params = system::loadSystemParams(config);
@@ -156,6 +166,20 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   }
 
   const system::RunResults results = slam->results();
+  // Scans without a valid ray (every range NaN, not positive or out of range) are tracked by
+  // the prediction and map nothing: a run of only such scans has no map to write.
+  const size_t blind = static_cast<size_t>(std::count_if(results.stats.begin(), results.stats.end(),
+                                                         [](const system::ScanStats& r) { return r.valid_rays == 0; }));
+  if (blind > 0 && blind == results.stats.size() && !stop.requested())
+  {
+    err << "swslam: " << source->describe() << ": none of its " << blind
+        << " scans tracked had a valid ray (every range NaN, not positive or beyond the sensor's range): nothing "
+           "to map; nothing written\n";
+    return code == kExitOk ? kExitInputError : code;
+  }
+  if (blind > 0)
+    err << "swslam: " << blind << " of the " << results.stats.size()
+        << " scans tracked had no valid ray; the prediction placed them and they mapped nothing\n";
   const mrpt::maps::COccupancyGridMap2D grid = slam->mapSnapshot();
   // The modules' memory is not needed for writing: give it back to the system before the
   // off-screen render allocates its own (this keeps the run's peak memory down).

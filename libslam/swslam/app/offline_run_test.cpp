@@ -17,6 +17,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <octomap/OcTree.h>
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <set>
@@ -252,7 +253,63 @@ void writeRestampedLake(const std::string& path, size_t n, const std::function<d
     scans += scan ? 1 : 0;
   }
 }
+/** The first n scans of lake-short (and the observations between them), the rays of the scans
+ * k with blind(k) all invalid (no return). */
+void writeBlindedLake(const std::string& path, size_t n, const std::function<bool(size_t)>& blind)
+{
+  io::RawlogReader reader(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog");
+  mrpt::io::CFileGZOutputStream f(path);
+  auto arch = mrpt::serialization::archiveFrom(f);
+  io::RawlogItem item;
+  size_t scans = 0;
+  while (scans < n && reader.next(item))
+  {
+    if (!item.observation) continue;
+    if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation))
+    {
+      if (blind(scans))
+        for (size_t i = 0; i < scan->getScanSize(); i++) scan->setScanRangeValidity(i, false);
+      scans++;
+    }
+    arch << *item.observation;
+  }
+}
 }  // namespace
+
+TEST(OfflineRun, ALogWithoutAValidRayIsAnErrorAndOneWithSomeSaysHowMany)
+{
+  const std::string dir = test::tempDir("offline_blind");
+  OfflineRunOptions o = quickLakeRun(dir);
+  o.input = dir + "/blind.rawlog";
+  writeBlindedLake(o.input, 40, [](size_t) { return true; });
+  std::ostringstream out, err;
+  EXPECT_EQ(runOffline(o, out, err), kExitInputError);
+  EXPECT_NE(err.str().find("none of its 40 scans tracked had a valid ray"), std::string::npos) << err.str();
+  EXPECT_FALSE(std::filesystem::exists(o.output + "/map.gridmap.gz")) << "no empty map";
+  EXPECT_FALSE(std::filesystem::exists(o.output + "/trajectory.tum"));
+
+  writeBlindedLake(o.input, 40, [](size_t k) { return k >= 10 && k < 20; });
+  std::ostringstream out_some, err_some;
+  EXPECT_EQ(runOffline(o, out_some, err_some), kExitOk) << err_some.str();
+  EXPECT_NE(err_some.str().find("10 of the 40 scans tracked had no valid ray"), std::string::npos) << err_some.str();
+  EXPECT_EQ(common::readTum(o.output + "/trajectory.tum").size(), 40u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OfflineRun, ARealtimeFactorBelowZeroOrNotANumberIsAUsageError)
+{
+  const std::string dir = test::tempDir("offline_rate");
+  OfflineRunOptions o = quickLakeRun(dir);
+  for (const double rate : {-1.0, std::nan("")})
+  {
+    o.realtime_factor = rate;
+    std::ostringstream out, err;
+    EXPECT_EQ(runOffline(o, out, err), kExitUsage) << rate;
+    EXPECT_NE(err.str().find("--realtime-factor must be a finite number, at least 0"), std::string::npos) << err.str();
+    EXPECT_FALSE(std::filesystem::exists(o.output));
+  }
+  std::filesystem::remove_all(dir);
+}
 
 TEST(OfflineRun, AScanStampedBeyondTheYear2200IsSkippedAndSaid)
 {
