@@ -8,7 +8,9 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 namespace swslam::io
 {
@@ -23,6 +25,15 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
     throw std::invalid_argument(
         "carmen2rawlog: reference odometry needs laser-only conversion with repaired timestamps "
         "(--laser-only --repair-timestamps)");
+  // Two of the files the same (however spelled) would write one over the other, or over the log.
+  const auto same = [](const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return !a.empty() && !b.empty() &&
+           std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+  };
+  if (same(opts.output, opts.input) || same(opts.ground_truth, opts.input) || same(opts.ground_truth, opts.output))
+    throw std::invalid_argument("carmen2rawlog: the input '" + opts.input + "', the rawlog '" + opts.output +
+                                "' and the ground truth '" + opts.ground_truth + "' must be different files");
   CarmenLogReader reader(opts.input, opts.params, std::move(warn));
   std::vector<common::StampedPose> reference;
   std::string damage;

@@ -242,6 +242,31 @@ TEST(CarmenLog, NegativeTimestampsAreShifted)
   EXPECT_NEAR(toSec(scans[1]->timestamp), 1.0, 1e-6);
 }
 
+TEST(CarmenLog, TheRawlogTheGroundTruthAndTheLogMustBeThreeFiles)
+{
+  auto opts = excerptConversion("carmen_same_file");
+  const std::string dir = std::filesystem::path(opts.output).parent_path().string();
+  // The ground truth over the rawlog (spelled another way), or either over the log.
+  for (const auto& [output, ground_truth] :
+       {std::pair{opts.output, dir + "/./sub/../out.rawlog"}, {opts.input, opts.ground_truth}, {opts.output, opts.input}})
+  {
+    auto o = opts;
+    o.output = output;
+    o.ground_truth = ground_truth;
+    try
+    {
+      swslam::io::carmen2rawlog(o, [](const std::string&) {});
+      FAIL() << output << " " << ground_truth << ": no error";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("must be different files"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(opts.output));
+  EXPECT_GT(std::filesystem::file_size(opts.input), 0u) << "the log is untouched";
+}
+
 TEST(CarmenLog, RawlogRoundTripAndGroundTruth)
 {
   auto opts = excerptConversion("carmen_rawlog");
