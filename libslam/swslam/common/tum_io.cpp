@@ -14,10 +14,18 @@ std::vector<StampedPose> readTum(const std::string& path)
 {
   // A quaternion far from unit length is no rotation (all zeros read as yaw 0, silently);
   // 1% leaves room for files written with few decimals.
+  // A position beyond kMaxTumCoordinate is no trajectory, and its squares overflow an error
+  // sum (an ATE of inf).
   auto unit_quaternion = [](const std::array<double, 8>& r) -> std::string {
+    char buf[120];
+    for (int k = 1; k <= 3; k++)
+      if (std::abs(r[k]) > kMaxTumCoordinate)
+      {
+        std::snprintf(buf, sizeof(buf), "position %c = %g m is beyond %g m", "txyz"[k], r[k], kMaxTumCoordinate);
+        return buf;
+      }
     const double norm = std::sqrt(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7]);
     if (std::abs(norm - 1) <= 0.01) return {};
-    char buf[120];
     std::snprintf(buf, sizeof(buf), "quaternion (%g %g %g %g) has norm %g, not 1", r[4], r[5], r[6], r[7], norm);
     return buf;
   };

@@ -16,8 +16,12 @@ struct StampedPose
   mrpt::poses::CPose2D pose;
 };
 
-/** Reads a TUM file. Throws std::runtime_error naming the file and line on a malformed line
- * or a quaternion whose norm is not 1 (within 1%). */
+/** Largest position coordinate a TUM file may hold [m] (a million km: beyond any trajectory). */
+constexpr double kMaxTumCoordinate = 1e9;
+
+/** Reads a TUM file. Throws std::runtime_error naming the file and line on a malformed line,
+ * a position coordinate beyond kMaxTumCoordinate, or a quaternion whose norm is not 1 (within
+ * 1%). */
 std::vector<StampedPose> readTum(const std::string& path);
 
 /** Formats poses as TUM text (full precision). */

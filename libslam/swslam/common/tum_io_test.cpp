@@ -31,12 +31,12 @@ TEST(TumIo, AnyFiniteTimeWritesALineThatReadsBack)
   // "%.6f" of 1e308 is 316 characters: a fixed buffer cut the line (found by fuzzing,
   // tests/fuzz/regressions/tum_io).
   const auto dir = swslam::test::tempDir("tum_long");
-  const std::vector<swslam::common::StampedPose> poses = {{1e308, {-1e300, 2, 1}}, {-1e307, {3, 4, 0}}};
+  const std::vector<swslam::common::StampedPose> poses = {{1e308, {-1e9, 2, 1}}, {-1e307, {3, 4, 0}}};
   swslam::common::writeTum(dir + "/long.tum", poses);
   const auto back = swslam::common::readTum(dir + "/long.tum");
   ASSERT_EQ(back.size(), 2u);
   EXPECT_DOUBLE_EQ(back[0].t, 1e308);
-  EXPECT_DOUBLE_EQ(back[0].pose.x(), -1e300);
+  EXPECT_DOUBLE_EQ(back[0].pose.x(), -1e9);
   EXPECT_DOUBLE_EQ(back[1].t, -1e307);
 }
 
@@ -72,6 +72,23 @@ TEST(TumIo, AQuaternionThatIsNotUnitIsAnErrorNamingTheLine)
   }
   std::ofstream(dir + "/ok.tum") << "0 0 0 0 0 0 0.3827 0.9239\n";
   EXPECT_NEAR(swslam::common::readTum(dir + "/ok.tum").at(0).pose.phi(), M_PI / 4, 1e-3);
+}
+
+TEST(TumIo, APositionBeyondAMillionKilometresIsAnErrorNamingTheLine)
+{
+  // Finite, so it read; then the ATE's sum of squares overflowed to inf.
+  const auto dir = swslam::test::tempDir("tum_huge");
+  std::ofstream(dir + "/h.tum") << "0 1e9 -1e9 0 0 0 0 1\n1 1e160 0 0 0 0 0 1\n";
+  try
+  {
+    swslam::common::readTum(dir + "/h.tum");
+    FAIL();
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("line 2: position x = 1e+160 m is beyond 1e+09 m"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(AtomicFile, FailedWriterLeavesPreviousFileIntact)
