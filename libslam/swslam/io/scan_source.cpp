@@ -2,6 +2,7 @@
 
 #include <swslam/geometry/se2_scaling.h>
 
+#include <mrpt/core/format.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/system/datetime.h>
@@ -151,16 +152,21 @@ class CarmenSource : public SourceBase
   }
   std::string describe() const override
   {
+    // The reader shifts a log whose laser stamps are negative to start at 0: say by how much.
+    const double shift = reader_.stats().timestamp_offset;
+    const std::string shifted =
+        shift > 0 ? mrpt::format(", timestamps shifted by +%.6f s (the log's laser stamps are negative)", shift) : "";
     if (!opts_.use_odometry || laser_only_)
-      return "CARMEN log " + path_ + " (odometry not used)";
+      return "CARMEN log " + path_ + " (odometry not used" + shifted + ")";
     switch (reader_.stats().odometry_source)
     {
-      case CarmenOdometrySource::OdomLines: return "CARMEN log " + path_ + " (odometry: ODOM lines)";
+      case CarmenOdometrySource::OdomLines: return "CARMEN log " + path_ + " (odometry: ODOM lines" + shifted + ")";
       case CarmenOdometrySource::LaserFields:
-        return "CARMEN log " + path_ + " (odometry: the laser lines' odom_x odom_y odom_theta; no ODOM lines)";
+        return "CARMEN log " + path_ + " (odometry: the laser lines' odom_x odom_y odom_theta; no ODOM lines" +
+               shifted + ")";
       case CarmenOdometrySource::None: break;
     }
-    return "CARMEN log " + path_ + " (no odometry)";
+    return "CARMEN log " + path_ + " (no odometry" + shifted + ")";
   }
   double fractionRead() const override { return reader_.fractionRead(); }
 

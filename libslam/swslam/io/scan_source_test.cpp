@@ -6,6 +6,8 @@
 
 #include <sys/stat.h>
 
+#include <fstream>
+
 #include "test_support.h"
 
 using namespace swslam;
@@ -205,4 +207,15 @@ TEST(ScanSource, APipeOrADeviceIsAnErrorNotAWait)
           << e.what();
     }
   }
+}
+
+TEST(ScanSource, ACarmenLogWithNegativeStampsSaysItsShift)
+{
+  const std::string log = test::tempDir("scan_source_negative") + "/negative.log";
+  std::ofstream(log) << "FLASER 5 1 1 1 1 1 0 0 0 0 0 0 -10.5 host -10.5\n"
+                        "FLASER 5 1 1 1 1 1 0 0 0 0 0 0 -10.0 host -10.0\n";
+  const auto source = openScanSource(log, ScanSourceOptions{}, CarmenParams());
+  EXPECT_NE(source->describe().find("timestamps shifted by +10.500000 s (the log's laser stamps are negative)"),
+            std::string::npos)
+      << source->describe();
 }
