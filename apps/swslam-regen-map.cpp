@@ -27,7 +27,11 @@ int main(int argc, char** argv)
   try
   {
     swslam::system::SystemParams params = swslam::system::loadSystemParams(swslam::app::configOrDefault(config.getValue()));
-    if (resolution.isSet()) params.map.resolution = resolution.getValue();
+    if (resolution.isSet())
+    {
+      params.map.resolution = resolution.getValue();
+      params.map.check("--resolution " + std::to_string(resolution.getValue()));
+    }
     swslam::system::RunResults run_data;
     swslam::graph::GraphLoadReport load;
     run_data.graph = swslam::graph::loadGraph(run.getValue() + "/graph.graph", &load);

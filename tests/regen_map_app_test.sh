@@ -16,6 +16,14 @@ regen() { "$bin/swslam-regen-map" -r "$tmp/run" -i "$log" -c "$src/config/defaul
 regen clean > "$tmp/clean.log" 2>&1 || { echo "FAIL: clean regen exited $?"; cat "$tmp/clean.log"; fail=1; }
 [[ -s $tmp/clean/map.png ]] || { echo "FAIL: clean regen wrote no map.png"; fail=1; }
 
+# A --resolution out of the range [map] resolution allows: an error naming it, nothing written.
+"$bin/swslam-regen-map" -r "$tmp/run" -i "$log" -c "$src/config/default.ini" -o "$tmp/res" --no-render \
+  --resolution 1e9 > "$tmp/res.log" 2>&1
+code=$?
+[[ $code -eq 1 ]] || { echo "FAIL: --resolution 1e9: exit $code (expected 1)"; fail=1; }
+grep -q "resolution must be in \[0.005, 10\] m" "$tmp/res.log" || { echo "FAIL: --resolution 1e9 not named"; cat "$tmp/res.log"; fail=1; }
+[[ -e $tmp/res/map.png ]] && { echo "FAIL: --resolution 1e9 wrote a map"; fail=1; }
+
 # A stats.csv that lost its last row no longer matches the trajectory: said, and the pictures
 # are drawn without marks.
 sed -i '$d' "$tmp/run/stats.csv"

@@ -25,8 +25,13 @@ void MapParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const
   MRPT_LOAD_CONFIG_VAR_CS(occupied_thresh, double);
   MRPT_LOAD_CONFIG_VAR_CS(free_thresh, double);
 
+  check("config [" + s + "]");
+}
+
+void MapParams::check(const std::string& where) const
+{
   auto require = [&](bool ok, const char* what) {
-    if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
+    if (!ok) throw std::invalid_argument(where + ": " + what);
   };
   require(resolution >= 0.005 && resolution <= 10, "resolution must be in [0.005, 10] m");
   require(initial_half_size > 0 && grow_margin >= 0, "initial_half_size must be > 0, grow_margin >= 0");

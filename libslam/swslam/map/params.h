@@ -28,6 +28,9 @@ struct MapParams : public mrpt::config::CLoadableOptions
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  /** Throws std::invalid_argument "<where>: <what is wrong>" if a value is out of its range
+   * (loadFromConfigFile checks with where = "config [<section>]"). */
+  void check(const std::string& where) const;
 
   /** MRPT's insertion options that implement eq. (15)-(16) with these values. */
   mrpt::maps::COccupancyGridMap2D::TInsertionOptions insertionOptions() const;
