@@ -130,7 +130,9 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
         << "\nswslam: writing the outputs of what was read\n";
     code = kExitInputError;
   }
-  slam->finish();
+  // Stopped by a signal, the run ends without the final refinement's matches (they can take
+  // long: every pair of nearby nodes); the final optimization still runs.
+  slam->finish(!stop.requested());
   bar.done();
   // A log whose clock is not in seconds (microseconds...) or does not run is not a run with a
   // few skips.
@@ -147,7 +149,7 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
   if (stop.requested())
   {
     err << "swslam: stopped by signal " << stop.signal() << " after " << read
-        << " scans; writing the outputs\n";
+        << " scans; writing the outputs (without the final refinement)\n";
     code = kExitInterrupted;
   }
   if (!slam->error().empty())

@@ -344,7 +344,7 @@ void SlamSystem::finalGraphStep(const char* module, const std::function<GraphSte
   }
 }
 
-void SlamSystem::finish()
+void SlamSystem::finish(bool refine)
 {
   if (finished_) return;
   finished_ = true;
@@ -356,7 +356,7 @@ void SlamSystem::finish()
   }
   if (params_.system.final_full_optimization)
     finalGraphStep("final optimization", [this](size_t scan) { return graph_.optimizeAll(scan); });
-  if (params_.final_refinement.enabled)
+  if (params_.final_refinement.enabled && refine)
     finalGraphStep("final refinement", [this](size_t scan) {
       return graph_.refineAll(scan, params_.final_refinement);
     });

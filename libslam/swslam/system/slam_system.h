@@ -100,8 +100,9 @@ class SlamSystem
   FeedResult feed(sensor::ScanInput input);
 
   /** No more input: drains every queue, runs the final full optimization and the final
-   * refinement (each if configured), joins the threads. Idempotent. */
-  void finish();
+   * refinement (each if configured; the refinement only with `refine`: a run stopped by a
+   * signal ends sooner without its matches), joins the threads. Idempotent. */
+  void finish(bool refine = true);
 
   /** Empty unless a module failed. */
   std::string error() const;
