@@ -235,9 +235,10 @@ TEST(OfflineRun, ARerunReplacesEveryOutputOfThePreviousRunAndTwoRunsDoNotShareAF
 
 namespace
 {
-/** The first `n` scans (and the odometry among them) of lake-short, restamped by `stamp` (the
- * scan's index, its time) into `path`. */
-void writeRestampedLake(const std::string& path, size_t n, const std::function<double(size_t, double)>& stamp)
+/** The first `n` scans (and the odometry among them) of lake-short into `path`, each
+ * observation passed to `edit` first with the index of the scan it is or precedes. */
+void writeEditedLake(const std::string& path, size_t n,
+                     const std::function<void(size_t, mrpt::obs::CObservation&)>& edit)
 {
   io::RawlogReader reader(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog");
   mrpt::io::CFileGZOutputStream f(path);
@@ -247,32 +248,25 @@ void writeRestampedLake(const std::string& path, size_t n, const std::function<d
   while (scans < n && reader.next(item))
   {
     if (!item.observation) continue;
-    const bool scan = static_cast<bool>(std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation));
-    item.observation->timestamp = mrpt::Clock::fromDouble(stamp(scans, mrpt::Clock::toDouble(item.observation->timestamp)));
+    edit(scans, *item.observation);
     arch << *item.observation;
-    scans += scan ? 1 : 0;
+    scans += std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation) ? 1 : 0;
   }
 }
-/** The first n scans of lake-short (and the observations between them), the rays of the scans
- * k with blind(k) all invalid (no return). */
+/** lake-short's first `n` scans restamped by `stamp` (the scan's index, its time). */
+void writeRestampedLake(const std::string& path, size_t n, const std::function<double(size_t, double)>& stamp)
+{
+  writeEditedLake(path, n, [&](size_t k, mrpt::obs::CObservation& o) {
+    o.timestamp = mrpt::Clock::fromDouble(stamp(k, mrpt::Clock::toDouble(o.timestamp)));
+  });
+}
+/** lake-short's first `n` scans, the rays of the scans k with blind(k) all invalid (no return). */
 void writeBlindedLake(const std::string& path, size_t n, const std::function<bool(size_t)>& blind)
 {
-  io::RawlogReader reader(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog");
-  mrpt::io::CFileGZOutputStream f(path);
-  auto arch = mrpt::serialization::archiveFrom(f);
-  io::RawlogItem item;
-  size_t scans = 0;
-  while (scans < n && reader.next(item))
-  {
-    if (!item.observation) continue;
-    if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation))
-    {
-      if (blind(scans))
-        for (size_t i = 0; i < scan->getScanSize(); i++) scan->setScanRangeValidity(i, false);
-      scans++;
-    }
-    arch << *item.observation;
-  }
+  writeEditedLake(path, n, [&](size_t k, mrpt::obs::CObservation& o) {
+    if (auto* scan = dynamic_cast<mrpt::obs::CObservation2DRangeScan*>(&o); scan && blind(k))
+      for (size_t i = 0; i < scan->getScanSize(); i++) scan->setScanRangeValidity(i, false);
+  });
 }
 }  // namespace
 
