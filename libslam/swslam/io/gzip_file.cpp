@@ -2,13 +2,24 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <zlib.h>
 
 namespace swslam::io
 {
+void requireLogFile(const std::string& path)
+{
+  std::error_code ec;
+  const auto type = std::filesystem::status(path, ec).type();
+  if (type == std::filesystem::file_type::fifo || type == std::filesystem::file_type::socket ||
+      type == std::filesystem::file_type::character || type == std::filesystem::file_type::block)
+    throw std::runtime_error("'" + path + "' is not a file but a pipe, socket or device: give a log file");
+}
+
 GzipFile::GzipFile(const std::string& path) : path_(path)
 {
+  requireLogFile(path);
   file_ = gzopen(path.c_str(), "rb");
   if (!file_) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
   gzbuffer(file_, 1 << 16);

@@ -25,10 +25,17 @@ class GzipError : public std::runtime_error
   uint64_t read_;
 };
 
+/** Throws std::runtime_error "'<path>' is not a file but a pipe, socket or device: give a log
+ * file" if `path` is one: a FIFO without a writer blocks its open for ever (a signal does not
+ * end it), and the readers open a log more than once (to tell its format, its size, its
+ * stamps). Every reader checks it before opening (GzipFile, ReadProgress, openScanSource). */
+void requireLogFile(const std::string& path);
+
 class GzipFile
 {
  public:
-  /** Opens `path`. Throws std::runtime_error if it cannot be opened. */
+  /** Opens `path`. Throws std::runtime_error if it cannot be opened, or is a pipe, socket or
+   * device (requireLogFile). */
   explicit GzipFile(const std::string& path);
   ~GzipFile();
   GzipFile(const GzipFile&) = delete;

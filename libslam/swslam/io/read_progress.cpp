@@ -1,5 +1,7 @@
 #include <swslam/io/read_progress.h>
 
+#include <swslam/io/gzip_file.h>
+
 #include <algorithm>
 #include <fstream>
 
@@ -15,6 +17,7 @@ double gzipFraction(uint64_t position, uint64_t isize)
 
 ReadProgress::ReadProgress(const std::string& path)
 {
+  requireLogFile(path);
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return;
   file_size_ = static_cast<uint64_t>(in.tellg());

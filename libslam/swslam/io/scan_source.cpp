@@ -1,6 +1,7 @@
 #include <swslam/io/scan_source.h>
 
 #include <swslam/geometry/se2_scaling.h>
+#include <swslam/io/gzip_file.h>
 
 #include <mrpt/core/format.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -8,7 +9,6 @@
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 
 namespace swslam::io
@@ -263,13 +263,7 @@ bool endsWith(const std::string& s, const std::string& suffix)
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
                                            const CarmenParams& carmen)
 {
-  // A pipe, socket or device would block the open (a FIFO waits for a writer) or be read twice
-  // (its format is told from its first bytes, then it is opened again).
-  std::error_code ec;
-  const auto type = std::filesystem::status(path, ec).type();
-  if (type == std::filesystem::file_type::fifo || type == std::filesystem::file_type::socket ||
-      type == std::filesystem::file_type::character || type == std::filesystem::file_type::block)
-    throw std::runtime_error("'" + path + "' is not a file but a pipe, socket or device: give a log file");
+  requireLogFile(path);  // before isBagFile reads its first bytes
   if (isBagFile(path)) return std::make_unique<BagSource>(path, opts);
   if (!opts.scan_topic.empty() || !opts.odom_topic.empty())
     throw std::runtime_error("'" + path + "' is not a ROS bag: scan and odometry topics apply only to bags");

@@ -1,5 +1,7 @@
 // Reading a run's input: odometry increments between scans, sensor selection, both formats.
 #include <swslam/io/scan_source.h>
+#include <swslam/io/carmen_log.h>
+#include <swslam/io/rawlog_reader.h>
 #include <swslam/geometry/se2_scaling.h>
 
 #include <gtest/gtest.h>
@@ -207,6 +209,9 @@ TEST(ScanSource, APipeOrADeviceIsAnErrorNotAWait)
           << e.what();
     }
   }
+  // The readers themselves refuse it too (swslam-carmen2rawlog reads a log without a source).
+  EXPECT_THROW(CarmenLogReader(fifo, CarmenParams()), std::runtime_error);
+  EXPECT_THROW(RawlogReader{fifo}, std::runtime_error);
 }
 
 TEST(ScanSource, ACarmenLogWithNegativeStampsSaysItsShift)
