@@ -12,11 +12,11 @@ namespace swslam::common
 {
 std::vector<StampedPose> readTum(const std::string& path)
 {
-  // A quaternion far from unit length is no rotation (all zeros read as yaw 0, silently);
-  // 1% leaves room for files written with few decimals.
-  // A position beyond kMaxTumCoordinate is no trajectory, and its squares overflow an error
-  // sum (an ATE of inf).
-  auto unit_quaternion = [](const std::array<double, 8>& r) -> std::string {
+  // What makes a row no pose: a position beyond kMaxTumCoordinate is no trajectory (and its
+  // squares overflow an error sum: an ATE of inf); a quaternion far from unit length is no
+  // rotation (all zeros read as yaw 0, silently), 1% leaving room for files written with few
+  // decimals.
+  auto row_problem = [](const std::array<double, 8>& r) -> std::string {
     char buf[120];
     for (int k = 1; k <= 3; k++)
       if (std::abs(r[k]) > kMaxTumCoordinate)
@@ -31,7 +31,7 @@ std::vector<StampedPose> readTum(const std::string& path)
   };
   std::vector<StampedPose> out;
   for (const auto& [t, x, y, z, qx, qy, qz, qw] :
-       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw", unit_quaternion))
+       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw", row_problem))
   {
     const double yaw = std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz));
     out.push_back({t, mrpt::poses::CPose2D(x, y, yaw)});
