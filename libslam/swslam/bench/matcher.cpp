@@ -24,15 +24,18 @@ namespace
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose2D;
 
-/** A matcher under test: relative vehicle pose of `cur` w.r.t. `ref` from `guess`. */
+/** A matcher under test: relative vehicle pose of `cur` w.r.t. `ref` from `guess`, which is
+ * measured (the reference motion, as odometry or a matched motion would predict it) or a mere
+ * guess (identity: no prediction). */
 struct Estimate
 {
   CPose2D pose;
   int iterations = 0;
   bool ok = true;
+  bool searched = false;  ///< the correlative search ran
 };
-using MatcherFn =
-    std::function<Estimate(const CObservation2DRangeScan&, const CObservation2DRangeScan&, const CPose2D&)>;
+using MatcherFn = std::function<Estimate(const CObservation2DRangeScan&, const CObservation2DRangeScan&,
+                                         const CPose2D& guess, bool guess_measured)>;
 
 double quantile(std::vector<double> v, double q)
 {
@@ -45,7 +48,7 @@ double quantile(std::vector<double> v, double q)
 MatcherFn plicpMatcher(const plicp::PlicpParams& params)
 {
   return [params](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
-                  const CPose2D& guess) {
+                  const CPose2D& guess, bool) {
     // PLICP works in the sensor frame: convert the vehicle-frame guess and result.
     const CPose2D s(a.sensorPose);
     const plicp::ReferenceScan ref(sensor::scanFromObservation(a), params);
@@ -54,34 +57,38 @@ MatcherFn plicpMatcher(const plicp::PlicpParams& params)
   };
 }
 
-/** PLICP as tracking uses it: when the match says its guess was poor (predictionFailed()),
- * a correlative search around the guess over the reference scan's rays, then PLICP from the
+/** PLICP as tracking uses it: when tracking would search after the match (searchNeeded(): the
+ * match says a measured guess was poor, or the guess is not measured and `search_guesses`), a
+ * correlative search around the guess over the reference scan's rays, then PLICP from the
  * search's best pose (searchAndMatch()). The search grid is built per pair and timed. */
-MatcherFn plicpSearchMatcher(const plicp::PlicpParams& params, const correlative::CorrelativeParams& search)
+MatcherFn plicpSearchMatcher(const plicp::PlicpParams& params, const correlative::CorrelativeParams& search,
+                             bool search_guesses)
 {
-  return [params, search](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
-                          const CPose2D& guess) {
+  return [params, search, search_guesses](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                                          const CPose2D& guess, bool guess_measured) {
     const CPose2D s(a.sensorPose);
     const plicp::ReferenceScan ref(sensor::scanFromObservation(a), params);
     const sensor::Scan cur = sensor::scanFromObservation(b);
     const CPose2D g = geometry::sensorMotion(s, guess);
     plicp::MatchResult r = plicp::matchScans(ref, cur, g, params);
     int iterations = r.iterations;
-    if (correlative::predictionFailed(r, g, search))
+    const bool searched =
+        correlative::searchNeeded(correlative::searchTrigger(r, g, search), guess_measured, search_guesses, false);
+    if (searched)
     {
       const correlative::SearchedMatch m = correlative::searchAndMatch(ref, correlative::searchPyramid(correlative::scanRays(ref.scan, search.max_range), search),
                                              cur, g, r, search, params);
       iterations += m.searched_iterations;
       r = m.match;
     }
-    return Estimate{geometry::vehicleMotion(s, r.pose), iterations, r.ok()};
+    return Estimate{geometry::vehicleMotion(s, r.pose), iterations, r.ok(), searched};
   };
 }
 
 MatcherFn cicpMatcher(mrpt::slam::TICPAlgorithm algorithm)
 {
   return [algorithm](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
-                     const CPose2D& guess) {
+                     const CPose2D& guess, bool) {
     mrpt::maps::CSimplePointsMap m1, m2;
     m1.insertObservation(a);
     m2.insertObservation(b);
@@ -96,11 +103,12 @@ MatcherFn cicpMatcher(mrpt::slam::TICPAlgorithm algorithm)
 
 std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
                                           const plicp::PlicpParams& plicp_params, const std::string& only,
-                                          const correlative::CorrelativeParams& search_params)
+                                          const correlative::CorrelativeParams& search_params,
+                                          bool search_guesses)
 {
   std::vector<std::pair<std::string, MatcherFn>> methods = {
       {"plicp", plicpMatcher(plicp_params)},
-      {"plicp+search", plicpSearchMatcher(plicp_params, search_params)},
+      {"plicp+search", plicpSearchMatcher(plicp_params, search_params, search_guesses)},
       {"cicp-classic", cicpMatcher(mrpt::slam::icpClassic)},
       {"cicp-lm", cicpMatcher(mrpt::slam::icpLevenbergMarquardt)}};
   if (!only.empty())
@@ -125,7 +133,7 @@ std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t
         const CPose2D ref_motion = data.truth[k + stride] - data.truth[k];
         const CPose2D guess = init == "identity" ? CPose2D() : ref_motion;
         mrpt::system::CTicTac timer;
-        const Estimate e = match(*data.scans[k], *data.scans[k + stride], guess);
+        const Estimate e = match(*data.scans[k], *data.scans[k + stride], guess, init == "reference");
         times_us.push_back(timer.Tac() * 1e6);
         const double et = (e.pose.translation() - ref_motion.translation()).norm();
         const double er = std::remainder(e.pose.phi() - ref_motion.phi(), 2 * M_PI);
@@ -134,6 +142,7 @@ std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t
         sq_r += er * er;
         iters += e.iterations;
         row.failures += e.ok ? 0 : 1;
+        row.searched += e.searched ? 1 : 0;
         row.pairs++;
       }
       if (row.pairs == 0) continue;
@@ -198,7 +207,7 @@ std::string formatFloor(const PlicpFloor& f)
 }
 
 SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
-                        const correlative::CorrelativeParams& search_params)
+                        const correlative::CorrelativeParams& search_params, bool search_guesses)
 {
   SearchFloor f;
   std::vector<double> first, grid, bnb, total;
@@ -212,7 +221,8 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
     const sensor::Scan cur = sensor::scanFromObservation(*data.scans[k + stride]);
     const plicp::MatchResult m = plicp::matchScans(ref, cur, guess, plicp_params);
     const double t_first = timer.Tac();
-    if (!correlative::predictionFailed(m, guess, search_params)) continue;
+    if (!correlative::searchNeeded(correlative::searchTrigger(m, guess, search_params), false, search_guesses, false))
+      continue;
     f.searched++;
     timer.Tic();
     const correlative::ScorePyramid pyramid =
@@ -253,7 +263,9 @@ std::string formatRow(const MatcherRow& r)
                 "failures=%zu",
                 r.method.c_str(), r.init.c_str(), r.pairs, r.median_us, r.p95_us, r.mean_iters,
                 r.trans_median_m, r.trans_rmse_m, r.rot_rmse_deg, r.frac_under_5cm, r.failures);
-  return buf;
+  std::string row = buf;
+  if (r.method == "plicp+search") row += " searched=" + std::to_string(r.searched);
+  return row;
 }
 
 }  // namespace swslam::bench

@@ -19,19 +19,23 @@ struct MatcherRow
 {
   std::string method, init;
   size_t pairs = 0, failures = 0;
+  size_t searched = 0;  ///< plicp+search: the pairs the correlative search ran for
   double median_us = 0, p95_us = 0, mean_iters = 0;
   double trans_median_m = 0, trans_rmse_m = 0, rot_rmse_deg = 0, frac_under_5cm = 0;
 };
 
 /** Runs every method (or only the one named `only`, if not empty) from each initial guess on
- * pairs (k, k + stride): `plicp`, `plicp+search` (PLICP, and when its guess looks poor the
- * correlative search of tracking with `search_params`, then PLICP from the search's pose),
- * `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose. Throws
- * std::invalid_argument for an unknown method name. */
+ * pairs (k, k + stride): `plicp`, `plicp+search` (PLICP, then the correlative search of
+ * tracking with `search_params` and PLICP from the search's pose when tracking would search:
+ * correlative::searchNeeded(), the reference motion counting as a measured prediction and
+ * identity as a guess, which `search_guesses` (tracking's search_first_match) always
+ * searches), `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose.
+ * Throws std::invalid_argument for an unknown method name. */
 std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
                                           const plicp::PlicpParams& plicp_params,
                                           const std::string& only = "",
-                                          const correlative::CorrelativeParams& search_params = {});
+                                          const correlative::CorrelativeParams& search_params = {},
+                                          bool search_guesses = true);
 
 /** The work every PLICP match at full resolution does before its first closed-form step, on
  * the pairs of benchmarkMatchers() from the reference guess: both scans converted
@@ -52,8 +56,9 @@ std::string formatFloor(const PlicpFloor& floor);
  * benchmarkMatchers() from identity (no prediction): PLICP from identity (both scans converted,
  * the reference index built, the match), the search's grid and pyramid built from the reference
  * scan, and the branch-and-bound search of the window around identity. The PLICP match from
- * the search's pose that follows is not counted. `searched` counts the pairs whose first match
- * says the guess was poor (predictionFailed()); the times are medians over those pairs, and
+ * the search's pose that follows is not counted. `searched` counts the pairs that
+ * benchmarkMatchers() searches from identity (all of them with `search_guesses`, else those
+ * whose first match says the guess was poor); the times are medians over those pairs, and
  * `total_us` the median of each pair's sum of the three. */
 struct SearchFloor
 {
@@ -61,12 +66,13 @@ struct SearchFloor
   double plicp_us = 0, grid_us = 0, bnb_us = 0, total_us = 0;
 };
 SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
-                        const correlative::CorrelativeParams& search_params);
+                        const correlative::CorrelativeParams& search_params, bool search_guesses = true);
 
 /** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...". */
 std::string formatSearchFloor(const SearchFloor& floor);
 
-/** One line per row: "plicp init=identity median_us=... p95_us=... ...". */
+/** One line per row: "plicp init=identity median_us=... p95_us=... ..." (plicp+search rows end
+ * with "searched=N"). */
 std::string formatRow(const MatcherRow& row);
 
 }  // namespace swslam::bench

@@ -74,8 +74,8 @@ TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
   // Steps of 0.2 m and 2 deg: from identity PLICP moves every guess by more than the search's
   // trigger (0.1 m), so every pair is searched.
   const auto data = roomWalk(6);
-  const swslam::bench::SearchFloor f =
-      swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), swslam::correlative::CorrelativeParams());
+  const swslam::bench::SearchFloor f = swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(),
+                                                                  swslam::correlative::CorrelativeParams(), false);
   EXPECT_EQ(f.pairs, 5u);
   EXPECT_EQ(f.searched, 5u);
   EXPECT_GT(f.plicp_us, 0.0);
@@ -84,15 +84,52 @@ TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
   EXPECT_GE(f.total_us, f.plicp_us);
   EXPECT_GE(f.total_us, f.grid_us);
   EXPECT_GE(f.total_us, f.bnb_us);
-  // A search that never triggers: no pair is searched, and no time is reported.
+  // A search that never triggers: no pair is searched, and no time is reported, unless
+  // identity, a guess, is searched as tracking searches a run's first match.
   swslam::correlative::CorrelativeParams never;
   never.trigger_correction_xy = 100;
   never.trigger_correction_theta = 10;
   never.trigger_inlier_fraction = 0;
-  const swslam::bench::SearchFloor none = swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never);
+  const swslam::bench::SearchFloor none = swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never, false);
   EXPECT_EQ(none.pairs, 5u);
   EXPECT_EQ(none.searched, 0u);
   EXPECT_EQ(none.total_us, 0.0);
+  EXPECT_EQ(swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never, true).searched, 5u);
   EXPECT_NE(swslam::bench::formatSearchFloor(f).find("search-floor  init=identity  pairs=5 searched=5 median_us="),
             std::string::npos);
+}
+
+TEST(MatcherBenchmark, FromIdentityPlicpSearchSearchesTheGuessAsTrackingDoes)
+{
+  // A corridor with an end wall, scanned every 1 m: from identity PLICP can keep the guess (the
+  // walls agree at any shift, and most points stay inliers), and the trigger alone does not
+  // search it. Identity is a guess, not a measured prediction: searched, as tracking searches
+  // a run's first match (search_first_match), every step comes from the end wall.
+  auto world = swslam::test::corridorWorld();
+  world.segments.push_back({6, -1, 6, 1});
+  std::mt19937 rng(3);
+  swslam::io::ScansWithTruth data;
+  for (int k = 0; k < 4; k++)
+  {
+    const CPose2D pose(1.0 * k, 0, 0);
+    data.scans.push_back(std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+        swslam::test::simulateObservation(world, pose, 181, M_PI, 8, 0.01, rng)));
+    data.truth.push_back(pose);
+  }
+  auto row = [&](bool search_guesses, const std::string& init) {
+    for (const auto& r : swslam::bench::benchmarkMatchers(data, 1, swslam::plicp::PlicpParams(), "plicp+search",
+                                                          swslam::correlative::CorrelativeParams(), search_guesses))
+      if (r.init == init) return r;
+    ADD_FAILURE() << "no " << init << " row";
+    return swslam::bench::MatcherRow{};
+  };
+  const auto searched = row(true, "identity");
+  EXPECT_EQ(searched.searched, 3u);
+  EXPECT_EQ(searched.frac_under_5cm, 1.0);
+  const auto trigger_only = row(false, "identity");
+  EXPECT_LT(trigger_only.searched, 3u);
+  EXPECT_LT(trigger_only.frac_under_5cm, 1.0) << "PLICP keeps the guess along the corridor";
+  // The reference motion is measured: searching guesses changes nothing there.
+  EXPECT_EQ(row(true, "reference").searched, row(false, "reference").searched);
+  EXPECT_NE(swslam::bench::formatRow(searched).find(" searched=3"), std::string::npos);
 }

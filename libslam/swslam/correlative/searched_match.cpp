@@ -67,6 +67,12 @@ bool predictionFailed(const plicp::MatchResult& m, const CPose2D& guess, const C
   return searchTrigger(m, guess, p) != SearchTrigger::None;
 }
 
+bool searchNeeded(SearchTrigger why, bool guess_measured, bool search_guesses, bool proven)
+{
+  if (search_guesses && !guess_measured) return true;
+  return why != SearchTrigger::None && !(why == SearchTrigger::LowOverlap && proven);
+}
+
 MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
                                const SearchWindow& w, const Eigen::Vector3d& first,
                                const Eigen::Vector3d& searched, double common_points_fraction,

@@ -44,6 +44,14 @@ SearchTrigger searchTrigger(const plicp::MatchResult& m, const mrpt::poses::CPos
 bool predictionFailed(const plicp::MatchResult& m, const mrpt::poses::CPose2D& guess,
                       const CorrelativeParams& p);
 
+/** Whether tracking searches after a first match that ended with `why`. A guess that nothing
+ * measured (no odometry, no matched motion: a run's first match, or a pair with no
+ * prediction) is always searched when `search_guesses` is on (tracking's search_first_match):
+ * along a corridor PLICP keeps such a guess at any speed, its match moving nothing and keeping
+ * most of its points as inliers. A measured prediction is searched when the trigger is not
+ * None, except for little overlap on a prediction that the last scans confirmed (`proven`). */
+bool searchNeeded(SearchTrigger why, bool guess_measured, bool search_guesses, bool proven);
+
 /** The objectives the choice between a first and a searched match compares (compareMatches). */
 struct MatchComparison
 {

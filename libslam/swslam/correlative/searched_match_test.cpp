@@ -60,6 +60,26 @@ TEST(SearchedMatch, TheTriggerSaysWhy)
   EXPECT_EQ(searchTrigger(failed, guess, p), SearchTrigger::Failed);
 }
 
+TEST(SearchedMatch, AGuessIsAlwaysSearchedAMeasuredPredictionWhenItFailed)
+{
+  using T = SearchTrigger;
+  for (const T why : {T::None, T::Failed, T::Moved, T::LowOverlap})
+    for (const bool proven : {false, true})
+    {
+      const bool failed = why != T::None && !(why == T::LowOverlap && proven);
+      EXPECT_TRUE(searchNeeded(why, false, true, proven)) << "a guess, searched";
+      EXPECT_EQ(searchNeeded(why, false, false, proven), failed) << "a guess, searching guesses off";
+      EXPECT_EQ(searchNeeded(why, true, true, proven), failed) << "a measured prediction";
+      EXPECT_EQ(searchNeeded(why, true, false, proven), failed);
+    }
+  // Little overlap on a proven prediction (a door swung shut) is not searched; on an unproven
+  // one, or a failed or moved match, it is.
+  EXPECT_FALSE(searchNeeded(T::LowOverlap, true, true, true));
+  EXPECT_TRUE(searchNeeded(T::LowOverlap, true, true, false));
+  EXPECT_TRUE(searchNeeded(T::Moved, true, true, true));
+  EXPECT_FALSE(searchNeeded(T::None, true, true, false));
+}
+
 TEST(SearchedMatch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
 {
   sensor::Scan s;

@@ -81,9 +81,7 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
   // A prediction that no matched motion or odometry backs (a run's first match: "no motion")
   // is a guess, not a measurement. Along a corridor PLICP keeps it at any speed, so the
   // search decides.
-  const bool guessed = tracking_.search_first_match && !measured_prediction;
-  if (!guessed && (why == correlative::SearchTrigger::None || (why == correlative::SearchTrigger::LowOverlap && proven)))
-    return m;
+  if (!correlative::searchNeeded(why, measured_prediction, tracking_.search_first_match, proven)) return m;
   confirmed_in_a_row_ = 0;
   if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
   {
