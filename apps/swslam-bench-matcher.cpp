@@ -12,7 +12,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> input("i", "input", "Rawlog with 2D scans", true, "", "LOG.rawlog", cmd);
   TCLAP::ValueArg<std::string> gt("g", "ground-truth", "Reference poses (TUM)", true, "", "GT.tum", cmd);
   TCLAP::ValueArg<size_t> stride("s", "stride", "Pair scans k and k+K", false, 1, "K", cmd);
-  TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp], [correlative] and [tracking] search_first_match)", false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp], [correlative] and [tracking] search rules)", false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> only("m", "method", "Run only this matcher (plicp, plicp+search, cicp-classic, cicp-lm)", false, "", "NAME", cmd);
   TCLAP::SwitchArg floor_arg("f", "floor", "Also time the work of any full-resolution PLICP match before its first step (scan conversion, reference index, one search), and the parts of a pair that plicp+search searches from identity (PLICP, the search's grid, branch and bound)", cmd);
   try
@@ -20,13 +20,13 @@ int main(int argc, char** argv)
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     swslam::plicp::PlicpParams params;
     swslam::correlative::CorrelativeParams search;
-    bool search_guesses = swslam::tracking::TrackingParams().search_first_match;
+    swslam::tracking::TrackingParams tracking;
     if (!config.getValue().empty())
     {
       const auto loaded = swslam::system::loadSystemParams(config.getValue());
       params = loaded.plicp;
       search = loaded.correlative;
-      search_guesses = loaded.tracking.search_first_match;
+      tracking = loaded.tracking;
     }
     if (stride.getValue() < 1) throw std::invalid_argument("--stride must be >= 1");
     const auto data = swslam::io::loadScansWithTruth(input.getValue(), swslam::common::readTum(gt.getValue()));
@@ -34,13 +34,12 @@ int main(int argc, char** argv)
     std::cout << "# " << input.getValue() << ": " << data.scans.size() << " scans of "
               << s0.getScanSize() << " beams over " << s0.aperture * 180 / M_PI << " deg, stride "
               << stride.getValue() << "\n";
-    for (const auto& row : swslam::bench::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search,
-                                                               search_guesses))
+    for (const auto& row : swslam::bench::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search, tracking))
       std::cout << swslam::bench::formatRow(row) << std::endl;
     if (floor_arg.getValue())
     {
       std::cout << swslam::bench::formatFloor(swslam::bench::plicpFloor(data, stride.getValue(), params)) << std::endl;
-      std::cout << swslam::bench::formatSearchFloor(swslam::bench::searchFloor(data, stride.getValue(), params, search, search_guesses))
+      std::cout << swslam::bench::formatSearchFloor(swslam::bench::searchFloor(data, stride.getValue(), params, search, tracking.search_first_match))
                 << std::endl;
     }
     return 0;

@@ -58,28 +58,40 @@ MatcherFn plicpMatcher(const plicp::PlicpParams& params)
 }
 
 /** PLICP as tracking uses it: when tracking would search after the match (searchNeeded(): the
- * match says a measured guess was poor, or the guess is not measured and `search_guesses`), a
- * correlative search around the guess over the reference scan's rays, then PLICP from the
- * search's best pose (searchAndMatch()). The search grid is built per pair and timed. */
+ * match says a measured guess was poor, or the guess is not measured and
+ * `tracking.search_first_match`), a correlative search around the guess over the reference scan's
+ * rays, then PLICP from the search's best pose (searchAndMatch()), and what tracking keeps of
+ * the two (afterSearch()). The search grid is built per pair and timed. */
 MatcherFn plicpSearchMatcher(const plicp::PlicpParams& params, const correlative::CorrelativeParams& search,
-                             bool search_guesses)
+                             const tracking::TrackingParams& tracking)
 {
-  return [params, search, search_guesses](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
-                                          const CPose2D& guess, bool guess_measured) {
+  return [params, search, tracking](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                                 const CPose2D& guess, bool guess_measured) {
     const CPose2D s(a.sensorPose);
     const plicp::ReferenceScan ref(sensor::scanFromObservation(a), params);
     const sensor::Scan cur = sensor::scanFromObservation(b);
     const CPose2D g = geometry::sensorMotion(s, guess);
     plicp::MatchResult r = plicp::matchScans(ref, cur, g, params);
     int iterations = r.iterations;
-    const bool searched =
-        correlative::searchNeeded(correlative::searchTrigger(r, g, search), guess_measured, search_guesses, false);
+    const correlative::SearchTrigger why = correlative::searchTrigger(r, g, search);
+    const bool searched = correlative::searchNeeded(why, guess_measured, tracking.search_first_match, false);
     if (searched)
     {
-      const correlative::SearchedMatch m = correlative::searchAndMatch(ref, correlative::searchPyramid(correlative::scanRays(ref.scan, search.max_range), search),
-                                             cur, g, r, search, params);
+      const correlative::SearchedMatch m = correlative::searchAndMatch(
+          ref, correlative::searchPyramid(correlative::scanRays(ref.scan, search.max_range), search), cur, g, r,
+          search, params);
       iterations += m.searched_iterations;
-      r = m.match;
+      switch (correlative::afterSearch(why, m, tracking.overlap_search_min_inlier_fraction,
+                                       tracking.searched_min_inlier_fraction))
+      {
+        case correlative::AfterSearch::KeepFirst:
+          break;
+        case correlative::AfterSearch::Unmatched:
+          return Estimate{guess, iterations, false, true};
+        case correlative::AfterSearch::Chosen:
+          r = m.match;
+          break;
+      }
     }
     return Estimate{geometry::vehicleMotion(s, r.pose), iterations, r.ok(), searched};
   };
@@ -104,11 +116,11 @@ MatcherFn cicpMatcher(mrpt::slam::TICPAlgorithm algorithm)
 std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
                                           const plicp::PlicpParams& plicp_params, const std::string& only,
                                           const correlative::CorrelativeParams& search_params,
-                                          bool search_guesses)
+                                          const tracking::TrackingParams& tracking)
 {
   std::vector<std::pair<std::string, MatcherFn>> methods = {
       {"plicp", plicpMatcher(plicp_params)},
-      {"plicp+search", plicpSearchMatcher(plicp_params, search_params, search_guesses)},
+      {"plicp+search", plicpSearchMatcher(plicp_params, search_params, tracking)},
       {"cicp-classic", cicpMatcher(mrpt::slam::icpClassic)},
       {"cicp-lm", cicpMatcher(mrpt::slam::icpLevenbergMarquardt)}};
   if (!only.empty())

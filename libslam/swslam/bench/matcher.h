@@ -6,6 +6,7 @@
 #include <swslam/correlative/params.h>
 #include <swslam/io/scans_with_truth.h>
 #include <swslam/plicp/plicp.h>
+#include <swslam/tracking/params.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
@@ -28,14 +29,16 @@ struct MatcherRow
  * pairs (k, k + stride): `plicp`, `plicp+search` (PLICP, then the correlative search of
  * tracking with `search_params` and PLICP from the search's pose when tracking would search:
  * correlative::searchNeeded(), the reference motion counting as a measured prediction and
- * identity as a guess, which `search_guesses` (tracking's search_first_match) always
- * searches), `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose.
+ * identity as a guess, which `tracking.search_first_match` always searches; of the two
+ * matches, what tracking keeps: correlative::afterSearch() with `tracking`'s fractions, an
+ * unmatched pair failing with the guess as its pose, as the prediction carries such a scan),
+ * `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose.
  * Throws std::invalid_argument for an unknown method name. */
 std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
                                           const plicp::PlicpParams& plicp_params,
                                           const std::string& only = "",
                                           const correlative::CorrelativeParams& search_params = {},
-                                          bool search_guesses = true);
+                                          const tracking::TrackingParams& tracking = {});
 
 /** The work every PLICP match at full resolution does before its first closed-form step, on
  * the pairs of benchmarkMatchers() from the reference guess: both scans converted

@@ -117,8 +117,10 @@ TEST(MatcherBenchmark, FromIdentityPlicpSearchSearchesTheGuessAsTrackingDoes)
     data.truth.push_back(pose);
   }
   auto row = [&](bool search_guesses, const std::string& init) {
+    swslam::tracking::TrackingParams tracking;
+    tracking.search_first_match = search_guesses;
     for (const auto& r : swslam::bench::benchmarkMatchers(data, 1, swslam::plicp::PlicpParams(), "plicp+search",
-                                                          swslam::correlative::CorrelativeParams(), search_guesses))
+                                                          swslam::correlative::CorrelativeParams(), tracking))
       if (r.init == init) return r;
     ADD_FAILURE() << "no " << init << " row";
     return swslam::bench::MatcherRow{};

@@ -152,4 +152,15 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
   return out;
 }
 
+AfterSearch afterSearch(SearchTrigger why, const SearchedMatch& s, double overlap_min_inlier_fraction,
+                        double min_inlier_fraction)
+{
+  const plicp::MatchResult& m = s.match;
+  if (s.replaced && why == SearchTrigger::LowOverlap && m.ok() &&
+      m.inliers < overlap_min_inlier_fraction * m.cur_valid_rays)
+    return AfterSearch::KeepFirst;
+  if (m.ok() && m.inliers < min_inlier_fraction * m.cur_valid_rays) return AfterSearch::Unmatched;
+  return AfterSearch::Chosen;
+}
+
 }  // namespace swslam::correlative

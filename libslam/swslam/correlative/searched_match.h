@@ -101,4 +101,22 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference,
                              const CorrelativeParams& p, const plicp::PlicpParams& plicp,
                              double cost_per_m2 = 0);
 
+/** What tracking keeps after searchAndMatch() (LocalTracker::matchLast; the matcher bench
+ * asks the same). */
+enum class AfterSearch
+{
+  KeepFirst,  ///< the first match stays: it stayed on its prediction and lost only overlap,
+              ///< and the search's match that replaced it explains too little of the scan
+              ///< (an object close in front of the sensor put on a wall elsewhere)
+  Unmatched,  ///< neither explains the scan: the chosen match has too few inliers, and the
+              ///< prediction carries the scan
+  Chosen,     ///< the search's choice (SearchedMatch::match: the first, or the one it found)
+};
+/** The rule: a replacement of a first match searched for its little overlap (why ==
+ * LowOverlap) needs overlap_min_inlier_fraction of the valid rays as inliers, else KeepFirst;
+ * then a chosen match with fewer than min_inlier_fraction of its valid rays as inliers is
+ * Unmatched ([tracking] overlap_search_min_inlier_fraction, searched_min_inlier_fraction). */
+AfterSearch afterSearch(SearchTrigger why, const SearchedMatch& s, double overlap_min_inlier_fraction,
+                        double min_inlier_fraction);
+
 }  // namespace swslam::correlative

@@ -80,6 +80,38 @@ TEST(SearchedMatch, AGuessIsAlwaysSearchedAMeasuredPredictionWhenItFailed)
   EXPECT_FALSE(searchNeeded(T::None, true, true, false));
 }
 
+TEST(SearchedMatch, AfterTheSearchTrackingKeepsTheFirstOnlyForOverlapAndLeavesFewInliersUnmatched)
+{
+  auto searched = [](bool replaced, size_t inliers) {
+    SearchedMatch s;
+    s.replaced = replaced;
+    s.match.status = plicp::MatchStatus::Converged;
+    s.match.cur_valid_rays = 100;
+    s.match.inliers = inliers;
+    return s;
+  };
+  using T = SearchTrigger;
+  // A replacement of a first match searched for its little overlap needs 20 of 100 inliers.
+  EXPECT_EQ(afterSearch(T::LowOverlap, searched(true, 19), 0.2, 0.1), AfterSearch::KeepFirst);
+  EXPECT_EQ(afterSearch(T::LowOverlap, searched(true, 20), 0.2, 0.1), AfterSearch::Chosen);
+  // Not for a first match that moved or failed, nor when the first match stayed.
+  EXPECT_EQ(afterSearch(T::Moved, searched(true, 19), 0.2, 0.1), AfterSearch::Chosen);
+  EXPECT_EQ(afterSearch(T::Failed, searched(true, 19), 0.2, 0.1), AfterSearch::Chosen);
+  EXPECT_EQ(afterSearch(T::LowOverlap, searched(false, 19), 0.2, 0.1), AfterSearch::Chosen);
+  // Under 10 of 100 inliers the chosen match, replaced or not, leaves the scan unmatched.
+  for (const T why : {T::None, T::Failed, T::Moved})
+    for (const bool replaced : {false, true})
+    {
+      EXPECT_EQ(afterSearch(why, searched(replaced, 9), 0.2, 0.1), AfterSearch::Unmatched);
+      EXPECT_EQ(afterSearch(why, searched(replaced, 10), 0.2, 0.1), AfterSearch::Chosen);
+    }
+  EXPECT_EQ(afterSearch(T::LowOverlap, searched(false, 9), 0.2, 0.1), AfterSearch::Unmatched);
+  // A failed match is no pose to keep or to call unmatched: the choice stands.
+  SearchedMatch failed = searched(false, 0);
+  failed.match.status = plicp::MatchStatus::TooFewCorrespondences;
+  EXPECT_EQ(afterSearch(T::Failed, failed, 0.2, 0.1), AfterSearch::Chosen);
+}
+
 TEST(SearchedMatch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
 {
   sensor::Scan s;

@@ -96,10 +96,10 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
   // of the sensor hides the surroundings, and the search may put that object on a wall of the
   // map far away. The search's match replaces it only if it explains more of the scan than a
   // match that only stands in for a failed or moved one must; else the first match stays.
-  if (s.replaced && why == correlative::SearchTrigger::LowOverlap && s.match.ok() &&
-      s.match.inliers < tracking_.overlap_search_min_inlier_fraction * s.match.cur_valid_rays)
-    return m;
-  if (s.match.ok() && s.match.inliers < tracking_.searched_min_inlier_fraction * s.match.cur_valid_rays)
+  const correlative::AfterSearch kept = correlative::afterSearch(
+      why, s, tracking_.overlap_search_min_inlier_fraction, tracking_.searched_min_inlier_fraction);
+  if (kept == correlative::AfterSearch::KeepFirst) return m;
+  if (kept == correlative::AfterSearch::Unmatched)
   {
     // Neither the prediction nor the search explains the scan: an odd scan (someone in front
     // of the sensor) or surroundings the keyframes never saw. It is unmatched rather than a
