@@ -39,7 +39,7 @@ int main(int argc, char** argv)
     if (floor_arg.getValue())
     {
       std::cout << swslam::bench::formatFloor(swslam::bench::plicpFloor(data, stride.getValue(), params)) << std::endl;
-      std::cout << swslam::bench::formatSearchFloor(swslam::bench::searchFloor(data, stride.getValue(), params, search, tracking.search_first_match))
+      std::cout << swslam::bench::formatSearchFloor(swslam::bench::searchFloor(data, stride.getValue(), params, search, tracking))
                 << std::endl;
     }
     return 0;

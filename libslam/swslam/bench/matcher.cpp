@@ -219,7 +219,7 @@ std::string formatFloor(const PlicpFloor& f)
 }
 
 SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
-                        const correlative::CorrelativeParams& search_params, bool search_guesses)
+                        const correlative::CorrelativeParams& search_params, const tracking::TrackingParams& tracking)
 {
   SearchFloor f;
   std::vector<double> first, grid, bnb, total;
@@ -233,7 +233,8 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
     const sensor::Scan cur = sensor::scanFromObservation(*data.scans[k + stride]);
     const plicp::MatchResult m = plicp::matchScans(ref, cur, guess, plicp_params);
     const double t_first = timer.Tac();
-    if (!correlative::searchNeeded(correlative::searchTrigger(m, guess, search_params), false, search_guesses, false))
+    if (!correlative::searchNeeded(correlative::searchTrigger(m, guess, search_params), false,
+                                   tracking.search_first_match, false))
       continue;
     f.searched++;
     timer.Tic();

@@ -60,7 +60,7 @@ std::string formatFloor(const PlicpFloor& floor);
  * the reference index built, the match), the search's grid and pyramid built from the reference
  * scan, and the branch-and-bound search of the window around identity. The PLICP match from
  * the search's pose that follows is not counted. `searched` counts the pairs that
- * benchmarkMatchers() searches from identity (all of them with `search_guesses`, else those
+ * benchmarkMatchers() searches from identity (all of them with `tracking.search_first_match`, else those
  * whose first match says the guess was poor); the times are medians over those pairs, and
  * `total_us` the median of each pair's sum of the three. */
 struct SearchFloor
@@ -69,7 +69,8 @@ struct SearchFloor
   double plicp_us = 0, grid_us = 0, bnb_us = 0, total_us = 0;
 };
 SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
-                        const correlative::CorrelativeParams& search_params, bool search_guesses = true);
+                        const correlative::CorrelativeParams& search_params,
+                        const tracking::TrackingParams& tracking = {});
 
 /** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...". */
 std::string formatSearchFloor(const SearchFloor& floor);

@@ -74,8 +74,10 @@ TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
   // Steps of 0.2 m and 2 deg: from identity PLICP moves every guess by more than the search's
   // trigger (0.1 m), so every pair is searched.
   const auto data = roomWalk(6);
+  swslam::tracking::TrackingParams trigger_only;
+  trigger_only.search_first_match = false;
   const swslam::bench::SearchFloor f = swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(),
-                                                                  swslam::correlative::CorrelativeParams(), false);
+                                                                  swslam::correlative::CorrelativeParams(), trigger_only);
   EXPECT_EQ(f.pairs, 5u);
   EXPECT_EQ(f.searched, 5u);
   EXPECT_GT(f.plicp_us, 0.0);
@@ -90,11 +92,12 @@ TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
   never.trigger_correction_xy = 100;
   never.trigger_correction_theta = 10;
   never.trigger_inlier_fraction = 0;
-  const swslam::bench::SearchFloor none = swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never, false);
+  const swslam::bench::SearchFloor none =
+      swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never, trigger_only);
   EXPECT_EQ(none.pairs, 5u);
   EXPECT_EQ(none.searched, 0u);
   EXPECT_EQ(none.total_us, 0.0);
-  EXPECT_EQ(swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never, true).searched, 5u);
+  EXPECT_EQ(swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never).searched, 5u);
   EXPECT_NE(swslam::bench::formatSearchFloor(f).find("search-floor  init=identity  pairs=5 searched=5 median_us="),
             std::string::npos);
 }

@@ -62,11 +62,6 @@ SearchTrigger searchTrigger(const plicp::MatchResult& m, const CPose2D& guess, c
   return SearchTrigger::None;
 }
 
-bool predictionFailed(const plicp::MatchResult& m, const CPose2D& guess, const CorrelativeParams& p)
-{
-  return searchTrigger(m, guess, p) != SearchTrigger::None;
-}
-
 bool searchNeeded(SearchTrigger why, bool guess_measured, bool search_guesses, bool proven)
 {
   if (search_guesses && !guess_measured) return true;

@@ -40,10 +40,6 @@ enum class SearchTrigger
 SearchTrigger searchTrigger(const plicp::MatchResult& m, const mrpt::poses::CPose2D& guess,
                             const CorrelativeParams& p);
 
-/** The match's prediction was unreliable: searchTrigger() is not None. */
-bool predictionFailed(const plicp::MatchResult& m, const mrpt::poses::CPose2D& guess,
-                      const CorrelativeParams& p);
-
 /** Whether tracking searches after a first match that ended with `why`. A guess that nothing
  * measured (no odometry, no matched motion: a run's first match, or a pair with no
  * prediction) is always searched when `search_guesses` is on (tracking's search_first_match):

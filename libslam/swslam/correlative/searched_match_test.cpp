@@ -29,6 +29,10 @@ plicp::MatchResult converged(const CPose2D& pose, size_t inliers, size_t rays)
   m.cur_valid_rays = rays;
   return m;
 }
+bool predictionFailed(const plicp::MatchResult& m, const CPose2D& guess, const correlative::CorrelativeParams& p)
+{
+  return searchTrigger(m, guess, p) != SearchTrigger::None;
+}
 }  // namespace
 
 TEST(SearchedMatch, PredictionFailsOnAFailedMatchFewInliersOrALargeCorrection)
