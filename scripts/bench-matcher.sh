@@ -45,23 +45,10 @@ for log in "$carmen_dir"/*-corrected.log.gz; do
   echo "# $name scored against the scans' own optimum near the reference"
   run rows-optimum "$name" "$work/$name.rawlog" "$work/$name.optimum.tum"
   # The optimum's consecutive motions against the reference's: the share within 5 cm
-  # (translation of the relative motion, as the matcher rows measure it).
-  awk -v name="$name" '
-    function yaw(qz, qw) { return 2 * atan2(qz, qw) }
-    /^#/ || NF < 8 { next }
-    FNR == 1 || FILENAME != file { file = FILENAME; f++ }
-    { t[f, ++n[f]] = $1; x[f, n[f]] = $2; y[f, n[f]] = $3; a[f, n[f]] = yaw($7, $8) }
-    END {
-      if (n[1] != n[2]) { printf "bench-matcher: %s: %d reference poses, %d optimum poses; not compared\n", name, n[1], n[2] > "/dev/stderr"; exit 0 }
-      for (k = 1; k < n[1]; k++) {
-        for (g = 1; g <= 2; g++) {
-          dx = x[g, k + 1] - x[g, k]; dy = y[g, k + 1] - y[g, k]; c = cos(a[g, k]); s = sin(a[g, k])
-          mx[g] = c * dx + s * dy; my[g] = -s * dx + c * dy
-        }
-        if (sqrt((mx[1] - mx[2]) ^ 2 + (my[1] - my[2]) ^ 2) < 0.05) within++
-      }
-      printf "%s %.1f %d\n", name, 100 * within / (n[1] - 1), n[1] - 1
-    }' "$work/$name.tum" "$work/$name.optimum.tum" >> "$work/agreement"
+  # (swslam-eval's RPE, the translation error of the relative motion the matcher rows measure).
+  "$bin/swslam-eval" ate "$work/$name.optimum.tum" "$work/$name.tum" |
+    awk -F= -v name="$name" '$1 == "rpe_pairs" { n = $2 } $1 == "rpe_trans_within_5cm" { share = $2 }
+      END { printf "%s %.1f %d\n", name, 100 * share, n }' >> "$work/agreement"
 done
 
 # Summary per log and initial guess: share of pairs under 5 cm, translation RMSE, median time.

@@ -99,7 +99,8 @@ std::string formatTrajectoryEvaluation(const TrajectoryEvaluation& e)
        line("align_yaw_deg", RAD2DEG(e.ate.alignment.phi()));
   s += line("rpe_pairs", e.rpe_step.translation.n) +
        line("rpe_trans_rmse", e.rpe_step.translation.rmse) +
-       line("rpe_rot_rmse_deg", RAD2DEG(e.rpe_step.rotation.rmse));
+       line("rpe_rot_rmse_deg", RAD2DEG(e.rpe_step.rotation.rmse)) +
+       line("rpe_trans_within_5cm", e.rpe_step.share_within_5cm);
   s += line("rpe_seg_length", e.segment_length) +
        line("rpe_seg_pairs", e.rpe_segment.translation.n) +
        line("rpe_seg_trans_rmse", e.rpe_segment.translation.rmse) +

@@ -43,13 +43,16 @@ RpeResult relativePoseError(const std::vector<PosePair>& pairs,
                             const std::vector<IndexPair>& segments)
 {
   std::vector<double> trans, rot;
+  size_t within = 0;
   for (const auto& [i, j] : segments)
   {
     const auto e = relativeError(pairs[i].est, pairs[j].est, pairs[j].gt - pairs[i].gt);
     trans.push_back(e.norm());
     rot.push_back(std::abs(mrpt::math::wrapToPi(e.phi())));
+    within += trans.back() < kRpeAgreement ? 1 : 0;
   }
-  return {errorStats(std::move(trans)), errorStats(std::move(rot))};
+  const double share = segments.empty() ? std::nan("") : within / static_cast<double>(segments.size());
+  return {errorStats(std::move(trans)), errorStats(std::move(rot)), share};
 }
 
 }  // namespace swslam::eval

@@ -28,10 +28,14 @@ mrpt::poses::CPose2D relativeError(const mrpt::poses::CPose2D& a_i,
                                    const mrpt::poses::CPose2D& a_j,
                                    const mrpt::poses::CPose2D& expected);
 
+/** The matcher benchmark's bar for a relative pose (doc/plicp.md): its translation within 5 cm. */
+constexpr double kRpeAgreement = 0.05;  ///< [m]
+
 struct RpeResult
 {
   ErrorStats translation;  ///< |trans(E_ij)|, metres
   ErrorStats rotation;     ///< |angle(E_ij)|, radians
+  double share_within_5cm = 0;  ///< of the pairs, those with |trans(E_ij)| < kRpeAgreement (NaN: none)
 };
 
 /** RPE over the given pairs of indices into `pairs`. */

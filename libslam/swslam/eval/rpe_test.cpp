@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "eval_test_support.h"
@@ -48,6 +49,7 @@ TEST(EvalRpe, EqualsTheMatrixFormulaOnNoisyPoses)
   const auto pairs = swslam::test::pairUp(est, gt);
   const auto segments = swslam::eval::distancePairs(pairs, 1.0);
   double sum_t = 0, sum_r = 0;
+  size_t within = 0;
   for (const auto& [i, j] : segments)
   {
     // Sturm et al. eq. 3: E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j).
@@ -55,6 +57,7 @@ TEST(EvalRpe, EqualsTheMatrixFormulaOnNoisyPoses)
         (homogeneous(gt[i].pose).inverse() * homogeneous(gt[j].pose)).inverse() *
         (homogeneous(est[i].pose).inverse() * homogeneous(est[j].pose));
     sum_t += std::pow(swslam::test::transNorm(E), 2);
+    within += swslam::test::transNorm(E) < 0.05 ? 1 : 0;
     sum_r += std::pow(swslam::test::rotAngle(E), 2);
   }
   const auto r = swslam::eval::relativePoseError(pairs, segments);
@@ -62,6 +65,10 @@ TEST(EvalRpe, EqualsTheMatrixFormulaOnNoisyPoses)
   EXPECT_NEAR(r.translation.rmse, std::sqrt(sum_t / segments.size()), 1e-12);
   EXPECT_NEAR(r.rotation.rmse, std::sqrt(sum_r / segments.size()), 1e-12);
   EXPECT_GT(r.translation.rmse, 0.01);
+  EXPECT_DOUBLE_EQ(r.share_within_5cm, within / static_cast<double>(segments.size()));
+  EXPECT_GT(within, 0u);
+  EXPECT_LT(within, segments.size());
+  EXPECT_TRUE(std::isnan(swslam::eval::relativePoseError(pairs, {}).share_within_5cm));
 }
 
 TEST(EvalRpe, RigidOffsetIsZeroAndScaleErrorIsItsClosedForm)
