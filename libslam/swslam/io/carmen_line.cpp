@@ -1,5 +1,7 @@
 #include <swslam/io/carmen_line.h>
 
+#include <swslam/common/tum_io.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -57,9 +59,18 @@ class Fields
                             std::to_string(kMaxCount) + "]: '" + t + "'");
     return static_cast<size_t>(v);
   }
+  /** A pose: its position coordinates no larger than a trajectory file may hold
+   * (common::kMaxTumCoordinate: the ground truth written from these poses reads back). */
   mrpt::math::TPose2D pose(const char* what)
   {
     const double x = number(what), y = number(what), phi = number(what);
+    if (std::abs(x) > common::kMaxTumCoordinate || std::abs(y) > common::kMaxTumCoordinate)
+    {
+      std::ostringstream s;
+      s << message() << ": field '" << what << "' has a position beyond " << common::kMaxTumCoordinate
+        << " m: (" << x << ", " << y << ")";
+      throw CarmenLineError(s.str());
+    }
     return {x, y, phi};
   }
   /** The ipc timestamp, then optionally hostname and logger timestamp; nothing more. */

@@ -87,6 +87,8 @@ TEST(CarmenLine, MalformedLinesNameTheProblem)
       {"FLASER 999999999 1", "num_readings"},                      // absurd count
       {"FLASER 2 1 2 0 0 0 0 0 0 1 h 1 extra", "unexpected"},      // extra fields
       {"ODOM 1 2 nan 0 0 0 1 h 1", "not finite"},                  // non-finite pose
+      {"ODOM 1 -3e9 0 0 0 0 1 h 1", "position beyond"},           // no trajectory's position
+      {"FLASER 1 1 2.5e73 0 0 0 0 0 1 h 1", "position beyond"},   // truth pose of the fuzz crash
       {"ODOM 1 2 0 0 0 0 inf h 1", "ipc_timestamp"},               // non-finite timestamp
       {"PARAM lonely", "param_value"}};
   for (const auto& [text, expected] : cases)
