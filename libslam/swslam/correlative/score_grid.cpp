@@ -39,21 +39,33 @@ ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double reso
   g.width = top.x() + below.x() + 1;
   g.height = top.y() + below.y() + 1;
   g.cells.assign(static_cast<size_t>(g.width) * g.height, 0);
-  // The max of the points' kernels is the kernel of the nearest point.
+  // The max of the points' kernels is the kernel of the nearest point. The kernel is the
+  // product of its x and y factors, each computed once per column and row of a point's square.
   const double inv2s2 = 1 / (2 * sigma * sigma);
+  const int side = 2 * reach_cells + 1;
+  std::vector<double> dx2(side), dy2(side), ex(side), ey(side);
   for (const auto& p : points)
   {
     const Eigen::Vector2i c = g.cellOf(p);
-    for (int y = c.y() - reach_cells; y <= c.y() + reach_cells; y++)
-      for (int x = c.x() - reach_cells; x <= c.x() + reach_cells; x++)
+    for (int k = 0; k < side; k++)
+    {
+      const double dx = g.origin.x() + (c.x() - reach_cells + k + 0.5) * resolution - p.x();
+      const double dy = g.origin.y() + (c.y() - reach_cells + k + 0.5) * resolution - p.y();
+      dx2[k] = dx * dx;
+      dy2[k] = dy * dy;
+      ex[k] = std::exp(-dx2[k] * inv2s2);
+      ey[k] = std::exp(-dy2[k] * inv2s2);
+    }
+    for (int ky = 0; ky < side; ky++)
+    {
+      int16_t* row = g.cells.data() + static_cast<size_t>(c.y() - reach_cells + ky) * g.width + (c.x() - reach_cells);
+      for (int kx = 0; kx < side; kx++)
       {
-        const Eigen::Vector2d centre = g.origin + (Eigen::Vector2d(x, y).array() + 0.5).matrix() * resolution;
-        const double d2 = (centre - p).squaredNorm();
-        if (d2 > reach * reach) continue;
-        const auto v = static_cast<int16_t>(std::lround(255 * std::exp(-d2 * inv2s2)));
-        int16_t& cell = g.cells[static_cast<size_t>(y) * g.width + x];
-        cell = std::max(cell, v);
+        if (dx2[kx] + dy2[ky] > reach * reach) continue;
+        const auto v = static_cast<int16_t>(255 * ex[kx] * ey[ky] + 0.5);
+        row[kx] = std::max(row[kx], v);
       }
+    }
   }
   return g;
 }
@@ -62,17 +74,27 @@ void markFreeSpace(ScoreGrid& g, const std::vector<Ray>& rays, int free_value)
 {
   if (free_value > 0) throw std::invalid_argument("markFreeSpace: free_value must be <= 0");
   const double step = g.resolution / 2;
+  // In cell units: the point origin + s u lies in cell floor(o + s v), with o the origin's and
+  // v the direction's coordinates divided by the resolution (no division per point).
+  const double inv = 1 / g.resolution;
+  auto floorOf = [](double v) {
+    const int i = static_cast<int>(v);
+    return i - (v < i);
+  };
   for (const Ray& r : rays)
   {
     const Eigen::Vector2d d = r.hit - r.origin;
     const double length = d.norm();
     if (!(length > 0)) continue;
-    const Eigen::Vector2d u = d / length;
+    const double ox = (r.origin.x() - g.origin.x()) * inv, oy = (r.origin.y() - g.origin.y()) * inv;
+    const double vx = d.x() / length * inv, vy = d.y() / length * inv;
     for (double s = 0; s < length; s += step)
     {
-      const Eigen::Vector2i c = g.cellOf(r.origin + s * u);
-      if (c.x() < 0 || c.y() < 0 || c.x() >= g.width || c.y() >= g.height) continue;
-      int16_t& cell = g.cells[static_cast<size_t>(c.y()) * g.width + c.x()];
+      const int x = floorOf(ox + s * vx), y = floorOf(oy + s * vy);
+      if (static_cast<unsigned>(x) >= static_cast<unsigned>(g.width) ||
+          static_cast<unsigned>(y) >= static_cast<unsigned>(g.height))
+        continue;
+      int16_t& cell = g.cells[static_cast<size_t>(y) * g.width + x];
       if (cell == 0) cell = static_cast<int16_t>(free_value);
     }
   }

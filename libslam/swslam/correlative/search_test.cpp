@@ -216,6 +216,42 @@ TEST(CorrelativeGrid, FreeSpaceMarksTheCellsARayCrossesBeforeItsHit)
   EXPECT_THROW(markFreeSpace(g, {}, 1), std::invalid_argument);
 }
 
+TEST(CorrelativeGrid, FreeSpaceAgreesWithAPerPointVersion)
+{
+  // markFreeSpace works in cell units; the slow version places each sample and asks cellOf.
+  std::mt19937 rng(11);
+  const double res = 0.1, sigma = 0.1;
+  const auto hits = randomPoints(rng, 60, 6.0);
+  std::vector<Ray> rays;
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (const auto& h : hits) rays.push_back({Eigen::Vector2d(U(rng), U(rng)), h});
+  rays.push_back({Eigen::Vector2d(20.0, 20.0), Eigen::Vector2d(25.0, -30.0)});  // mostly off the grid
+  rays.push_back({hits.front(), hits.front()});                                  // no length
+  ScoreGrid fast = buildScoreGrid(hits, res, sigma, 4);
+  ScoreGrid slow = fast;
+  markFreeSpace(fast, rays, -200);
+  for (const Ray& r : rays)
+  {
+    const double length = (r.hit - r.origin).norm();
+    if (!(length > 0)) continue;
+    const Eigen::Vector2d u = (r.hit - r.origin) / length;
+    for (double s = 0; s < length; s += res / 2)
+    {
+      const Eigen::Vector2i c = slow.cellOf(r.origin + s * u);
+      if (slow.at(c.x(), c.y()) != 0 || c.x() < 0 || c.y() < 0 || c.x() >= slow.width || c.y() >= slow.height)
+        continue;
+      slow.cells[static_cast<size_t>(c.y()) * slow.width + c.x()] = -200;
+    }
+  }
+  size_t marked = 0;
+  for (size_t k = 0; k < fast.cells.size(); k++)
+  {
+    ASSERT_EQ(fast.cells[k], slow.cells[k]) << "cell " << k % fast.width << ", " << k / fast.width;
+    marked += fast.cells[k] == -200;
+  }
+  EXPECT_GT(marked, 500u);
+}
+
 TEST(CorrelativeSearch, TheMotionPriorPicksTheAlignmentNearestThePrediction)
 {
   // Two long parallel walls: every shift along them scores the same (a corridor).
