@@ -56,13 +56,14 @@ PlicpFloor plicpFloor(const io::ScansWithTruth& data, size_t stride, const plicp
 std::string formatFloor(const PlicpFloor& floor);
 
 /** What a pair that `plicp+search` searches costs at least, on the pairs of
- * benchmarkMatchers() from identity (no prediction): PLICP from identity (both scans converted,
- * the reference index built, the match), the search's grid and pyramid built from the reference
- * scan, and the branch-and-bound search of the window around identity. The PLICP match from
- * the search's pose that follows is not counted. `searched` counts the pairs that
- * benchmarkMatchers() searches from identity (all of them with `tracking.search_first_match`, else those
- * whose first match says the guess was poor); the times are medians over those pairs, and
- * `total_us` the median of each pair's sum of the three. */
+ * benchmarkMatchers() from identity (no prediction): the PLICP match (both scans converted, the
+ * reference index built, the match), the search's grid and pyramid built from the reference
+ * scan, and the branch-and-bound search of the window around identity. Identity is a guess:
+ * with `tracking.search_first_match` every pair is searched first and the PLICP match is the one
+ * from the search's best pose (correlative::searchFirst()); else PLICP from identity comes first,
+ * and `searched` counts the pairs whose match says the guess was poor (the PLICP match from the
+ * search's pose that follows is then not counted). The times are medians over the searched
+ * pairs, and `total_us` the median of each pair's sum of the three. */
 struct SearchFloor
 {
   size_t pairs = 0, searched = 0;

@@ -68,6 +68,17 @@ bool searchNeeded(SearchTrigger why, bool guess_measured, bool search_guesses, b
   return why != SearchTrigger::None && !(why == SearchTrigger::LowOverlap && proven);
 }
 
+bool searchFirst(bool guess_measured, bool search_guesses) { return search_guesses && !guess_measured; }
+
+plicp::MatchResult notRun(const CPose2D& guess)
+{
+  plicp::MatchResult m;
+  m.status = plicp::MatchStatus::InvalidInput;
+  m.pose = guess;
+  m.message = "not run: the guess was searched first";
+  return m;
+}
+
 MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
                                const SearchWindow& w, const Eigen::Vector3d& first,
                                const Eigen::Vector3d& searched, double common_points_fraction,

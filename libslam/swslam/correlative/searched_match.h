@@ -48,6 +48,18 @@ SearchTrigger searchTrigger(const plicp::MatchResult& m, const mrpt::poses::CPos
  * None, except for little overlap on a prediction that the last scans confirmed (`proven`). */
 bool searchNeeded(SearchTrigger why, bool guess_measured, bool search_guesses, bool proven);
 
+/** Whether a pair is searched before any PLICP match: its guess is one that searchNeeded()
+ * always searches (nothing measured it, `search_guesses` on). PLICP then runs only from the
+ * search's best pose (searchAndMatch() with notRun() as the first match), and from the guess
+ * only when that gives no match. The guess is no better a start than the search's pose: PLICP
+ * from it as well cost a third of a searched pair's time from identity and changed few
+ * results (doc/plicp.md). */
+bool searchFirst(bool guess_measured, bool search_guesses);
+
+/** The first match of a pair searched first: not run, at the guess (not ok: searchAndMatch()
+ * has no first match to keep, and replaces it with any match it finds). */
+plicp::MatchResult notRun(const mrpt::poses::CPose2D& guess);
+
 /** The objectives the choice between a first and a searched match compares (compareMatches). */
 struct MatchComparison
 {

@@ -84,6 +84,19 @@ TEST(SearchedMatch, AGuessIsAlwaysSearchedAMeasuredPredictionWhenItFailed)
   EXPECT_FALSE(searchNeeded(T::None, true, true, false));
 }
 
+TEST(SearchedMatch, AGuessIsSearchedBeforeAnyMatch)
+{
+  EXPECT_TRUE(searchFirst(false, true));
+  EXPECT_FALSE(searchFirst(true, true));   // a measured prediction: PLICP first
+  EXPECT_FALSE(searchFirst(false, false));  // guesses not searched: PLICP first
+  // The not-run first match stands at the guess, fails, and so asks for the search.
+  const plicp::MatchResult none = notRun(CPose2D(1, 2, 0.3));
+  EXPECT_FALSE(none.ok());
+  EXPECT_EQ(none.pose, CPose2D(1, 2, 0.3));
+  EXPECT_EQ(searchTrigger(none, CPose2D(1, 2, 0.3), CorrelativeParams()), SearchTrigger::Failed);
+  EXPECT_TRUE(searchNeeded(SearchTrigger::Failed, false, true, false));
+}
+
 TEST(SearchedMatch, AfterTheSearchTrackingKeepsTheFirstOnlyForOverlapAndLeavesFewInliersUnmatched)
 {
   auto searched = [](bool replaced, size_t inliers) {

@@ -67,7 +67,13 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
                                            TrackingStep& step)
 {
   const Keyframe& last = keyframes_.back();
-  plicp::MatchResult m = matchReference(scan, guess);
+  // A prediction that no matched motion or odometry backs (a run's first match: "no motion")
+  // is a guess, not a measurement. Along a corridor PLICP keeps it at any speed, so the
+  // search decides, and PLICP runs from the search's pose alone (from the guess only if the
+  // search finds no match).
+  const bool search_first =
+      correlative_.enabled && correlative::searchFirst(measured_prediction, tracking_.search_first_match);
+  plicp::MatchResult m = search_first ? correlative::notRun(guess) : matchReference(scan, guess);
   if (!correlative_.enabled) return m;
   const correlative::SearchTrigger why = correlative::searchTrigger(m, guess, correlative_);
   // Once trust_prediction_after scans in a row confirmed their predictions, a match that
@@ -78,9 +84,6 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
                       confirmed_in_a_row_ >= static_cast<size_t>(correlative_.trust_prediction_after);
   if (why == correlative::SearchTrigger::None) confirmed_in_a_row_++;
   // The count goes on through such scans: a door passes by over several of them.
-  // A prediction that no matched motion or odometry backs (a run's first match: "no motion")
-  // is a guess, not a measurement. Along a corridor PLICP keeps it at any speed, so the
-  // search decides.
   if (!correlative::searchNeeded(why, measured_prediction, tracking_.search_first_match, proven)) return m;
   confirmed_in_a_row_ = 0;
   if (!search_pyramid_ || search_pyramid_keyframe_ != last.id)
@@ -89,9 +92,10 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
         correlative::searchPyramid(submapRays(), correlative_));
     search_pyramid_keyframe_ = last.id;
   }
-  const correlative::SearchedMatch s = correlative::searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_,
-                                         steady_.costPerM2(correlative_));
+  correlative::SearchedMatch s = correlative::searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_,
+                                                             plicp_, steady_.costPerM2(correlative_));
   step.searched = true;
+  if (search_first && !s.replaced) s.match = m = matchReference(scan, guess);
   // A first match that stayed on its prediction lost only overlap: an object close in front
   // of the sensor hides the surroundings, and the search may put that object on a wall of the
   // map far away. The search's match replaces it only if it explains more of the scan than a

@@ -60,7 +60,8 @@ void followPathAndCheckKeyframes(int local_map_keyframes)
     const CPose2D expected = (-path[0]) + path[k];  // the map frame is the first pose
     EXPECT_NEAR(step.pose.x(), expected.x(), 0.1 + 0.002 * k) << "scan " << k;
     EXPECT_NEAR(step.pose.y(), expected.y(), 0.1 + 0.002 * k) << "scan " << k;
-    if (k > 0) EXPECT_EQ(step.source, TrackingSource::Match) << step.match.message;
+    // The first match's prediction is a guess, searched first (correlative::searchFirst()).
+    if (k > 0) EXPECT_EQ(step.source, k == 1 ? TrackingSource::Searched : TrackingSource::Match) << step.match.message;
     if (!step.new_keyframe) continue;
     scan_of_keyframe.push_back(k);
     for (const auto& e : step.edges)
@@ -564,9 +565,9 @@ TEST(LocalTracker, TheFirstMatchIsSearchedAlongACorridor)
   // PLICP keeps it (the walls agree at any shift), the search finds the end wall's shift.
   test::World world = test::corridorWorld();
   world.segments.push_back({6, -1, 6, 1});
-  auto firstSteps = [&](const TrackingParams& tp) {
+  auto firstSteps = [&](const TrackingParams& tp, const correlative::CorrelativeParams& cp = {}) {
     std::mt19937 rng(8);
-    LocalTracker tracker(tp, plicp::PlicpParams());
+    LocalTracker tracker(tp, plicp::PlicpParams(), cp);
     std::vector<TrackingStep> steps;
     for (int k = 0; k < 4; k++)
     {
@@ -578,7 +579,18 @@ TEST(LocalTracker, TheFirstMatchIsSearchedAlongACorridor)
   };
   const auto steps = firstSteps(TrackingParams());
   EXPECT_TRUE(steps[1].searched);
+  // Searched first: the match is PLICP's from the search's pose.
+  EXPECT_EQ(steps[1].source, TrackingSource::Searched);
   for (int k = 1; k < 4; k++) EXPECT_NEAR(steps[k].pose.x(), 1.0 * k, 0.05) << "scan " << k;
+
+  // A search that finds nothing (no pose can score above 1): PLICP from the guess after all.
+  correlative::CorrelativeParams nothing;
+  nothing.min_score = 1.5;
+  const auto unfound = firstSteps(TrackingParams(), nothing);
+  EXPECT_TRUE(unfound[1].searched);
+  EXPECT_EQ(unfound[1].source, TrackingSource::Match);
+  EXPECT_TRUE(unfound[1].match.ok()) << unfound[1].match.message;
+  EXPECT_LT(unfound[1].pose.x(), 0.5) << "PLICP keeps the guess along the corridor";
 
   TrackingParams off;
   off.search_first_match = false;

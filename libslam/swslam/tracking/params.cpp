@@ -78,7 +78,7 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a match direction fewer rays of either scan face is unobservable: the prediction decides (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(searched_min_inlier_fraction, "a match chosen after the search counts only with this fraction of the valid rays as inliers (0: any)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(overlap_search_min_inlier_fraction, "a match the search found replaces one that stayed on its prediction (searched for its little overlap) only with this fraction of the valid rays as inliers");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(search_first_match, "the first match of a run without odometry is always searched (its prediction is a guess)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(search_first_match, "the first match of a run without odometry is found by the search before any PLICP match (its prediction is a guess)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(unmatched_scans_skipped, "an unmatched scan past the keyframe threshold is no node while at most this many in a row were unmatched (0: always a node)");
 }
 

@@ -47,7 +47,8 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
    * and an odd scan (someone in front of the sensor) never joins the graph (0: always a node). */
   int unmatched_scans_skipped = 2;
   /** The first match of a run without odometry (its prediction, no motion, is a guess) is
-   * always followed by the correlative search, whatever it says. */
+   * found by the correlative search before any PLICP match, PLICP running from the search's
+   * best pose (from the guess only if the search finds nothing). */
   bool search_first_match = true;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
