@@ -15,6 +15,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> config("c", "config", "Config file ([plicp], [correlative] and [tracking] search rules)", false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> only("m", "method", "Run only this matcher (plicp, plicp+search, cicp-classic, cicp-lm)", false, "", "NAME", cmd);
   TCLAP::SwitchArg floor_arg("f", "floor", "Also time the work of any full-resolution PLICP match before its first step (scan conversion, reference index, one search), and the parts of a pair that plicp+search searches from identity (PLICP, the search's grid, branch and bound)", cmd);
+  TCLAP::SwitchArg misses_arg("x", "misses", "Also count the pairs plicp+search puts 5 cm or more off from identity, and those of them whose own scans support the reference (PLICP from it stays, with more inliers or a higher grid score than at the chosen pose)", cmd);
   try
   {
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
@@ -42,6 +43,9 @@ int main(int argc, char** argv)
       std::cout << swslam::bench::formatSearchFloor(swslam::bench::searchFloor(data, stride.getValue(), params, search, tracking))
                 << std::endl;
     }
+    if (misses_arg.getValue())
+      std::cout << swslam::bench::formatMisses(swslam::bench::explainMisses(data, stride.getValue(), params, search, tracking))
+                << std::endl;
     return 0;
   }
   catch (const std::exception& e)

@@ -10,6 +10,9 @@
 # (swslam-eval laser-optimum, doc/evaluation.md), with a second table. Before it, per log, the
 # share of the optimum's consecutive motions within 5 cm of the reference's: no matcher
 # whose result the scans support does much better than that against the reference.
+# Under each table, per log: the pairs plicp+search puts 5 cm or more off from identity, and how
+# many of them the pair's own scans support the reference in (swslam-bench-matcher --misses):
+# the best share any choice made from the pair alone could reach.
 # Usage: scripts/bench-matcher.sh [CARMEN_DIR]    (needs a build: scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,8 +26,8 @@ pin=()
 if command -v taskset > /dev/null; then pin=(taskset -c 0); fi
 run() {  # rows-file name rawlog gt: the rows, also kept for the summary
   echo "# $2" | tee -a "$work/$1"
-  "${pin[@]}" "$bin/swslam-bench-matcher" --input "$3" --ground-truth "$4" --config config/default.ini --floor |
-    tee -a "$work/$1"
+  "${pin[@]}" "$bin/swslam-bench-matcher" --input "$3" --ground-truth "$4" --config config/default.ini --floor \
+    --misses | tee -a "$work/$1"
 }
 : > "$work/rows"
 : > "$work/rows-optimum"
@@ -70,9 +73,24 @@ summary() {
       }
     }' "$1"
 }
+# The misses of plicp+search from identity, and how many of them the pair's own scans support
+# (swslam-bench-matcher --misses): the best share under 5 cm any choice made from a pair alone
+# could reach.
+misses() {
+  awk '
+    /^# / && NF == 2 { log_name = $2; next }
+    /^misses / {
+      for (k = 2; k <= NF; k++) { split($k, kv, "="); f[kv[1]] = kv[2] }
+      printf "- %s: %d misses of %d pairs, %d of them supported by the pair: at most %.1f %% under 5 cm\n",
+        log_name, f["misses"], f["pairs"], f["supported"], 100 * f["best_frac_under_5cm"]
+    }' "$1"
+}
 echo
 echo "## Against the reference poses"
 summary "$work/rows"
+echo
+echo "plicp+search from identity, its misses (5 cm or more) and those the pair's own scans support:"
+misses "$work/rows"
 if [[ -s $work/agreement ]]; then
   echo
   echo "## Against the scans' own optimum near the reference (swslam-eval laser-optimum)"
@@ -80,4 +98,7 @@ if [[ -s $work/agreement ]]; then
   awk '{ printf "- %s: %.1f %% of %d\n", $1, $2, $3 }' "$work/agreement"
   echo
   summary "$work/rows-optimum"
+  echo
+  echo "plicp+search from identity, its misses (5 cm or more) and those the pair's own scans support:"
+  misses "$work/rows-optimum"
 fi

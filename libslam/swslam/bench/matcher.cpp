@@ -37,6 +37,9 @@ struct Estimate
 using MatcherFn = std::function<Estimate(const CObservation2DRangeScan&, const CObservation2DRangeScan&,
                                          const CPose2D& guess, bool guess_measured)>;
 
+/** [m] a pair's translation error below this counts as right (frac_under_5cm). */
+constexpr double kUnder = 0.05;
+
 double quantile(std::vector<double> v, double q)
 {
   if (v.empty()) return 0;
@@ -171,7 +174,7 @@ std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t
       row.trans_rmse_m = std::sqrt(sq_t / row.pairs);
       row.rot_rmse_deg = std::sqrt(sq_r / row.pairs) * 180 / M_PI;
       row.frac_under_5cm =
-          std::count_if(trans_err.begin(), trans_err.end(), [](double x) { return x < 0.05; }) /
+          std::count_if(trans_err.begin(), trans_err.end(), [](double x) { return x < kUnder; }) /
           static_cast<double>(row.pairs);
       rows.push_back(row);
     }
@@ -284,6 +287,55 @@ std::string formatSearchFloor(const SearchFloor& f)
   std::snprintf(buf, sizeof(buf),
                 "%-13s init=%-9s pairs=%zu searched=%zu median_us=%.1f plicp_us=%.1f grid_us=%.1f bnb_us=%.1f",
                 "search-floor", "identity", f.pairs, f.searched, f.total_us, f.plicp_us, f.grid_us, f.bnb_us);
+  return buf;
+}
+
+MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
+                              const correlative::CorrelativeParams& search_params,
+                              const tracking::TrackingParams& tracking)
+{
+  MissExplanation out;
+  const MatcherFn match = plicpSearchMatcher(plicp_params, search_params, tracking);
+  for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+  {
+    const CObservation2DRangeScan& a = *data.scans[k];
+    const CObservation2DRangeScan& b = *data.scans[k + stride];
+    const CPose2D ref_motion = data.truth[k + stride] - data.truth[k];
+    out.pairs++;
+    const Estimate e = match(a, b, CPose2D(), false);
+    if ((e.pose.translation() - ref_motion.translation()).norm() < kUnder) continue;
+    out.misses++;
+    // Both poses' own PLICP matches, in the reference sensor frame.
+    const CPose2D s(a.sensorPose);
+    const plicp::ReferenceScan ref(sensor::scanFromObservation(a), plicp_params);
+    const sensor::Scan cur = sensor::scanFromObservation(b);
+    const plicp::MatchResult at_ref = plicp::matchScans(ref, cur, geometry::sensorMotion(s, ref_motion), plicp_params);
+    if (!at_ref.ok() ||
+        (geometry::vehicleMotion(s, at_ref.pose).translation() - ref_motion.translation()).norm() >= kUnder)
+      continue;  // no optimum of the pair at the reference
+    const plicp::MatchResult at_chosen = plicp::matchScans(ref, cur, geometry::sensorMotion(s, e.pose), plicp_params);
+    if (!e.ok || !at_chosen.ok() || at_ref.inliers > at_chosen.inliers)
+    {
+      out.supported++;
+      continue;
+    }
+    const correlative::ScorePyramid pyramid =
+        correlative::searchPyramid(correlative::scanRays(ref.scan, search_params.max_range), search_params);
+    const auto points = correlative::thinPoints(cur.points, search_params.resolution, search_params.max_range);
+    auto score = [&](const CPose2D& p) {
+      return correlative::scoreAt(pyramid.levels.front(), points, Eigen::Vector3d(p.x(), p.y(), p.phi()));
+    };
+    if (score(at_ref.pose) > score(at_chosen.pose)) out.supported++;
+  }
+  if (out.pairs > 0) out.best_share = static_cast<double>(out.pairs - out.misses + out.supported) / out.pairs;
+  return out;
+}
+
+std::string formatMisses(const MissExplanation& m)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof(buf), "%-13s init=%-9s pairs=%zu misses=%zu supported=%zu best_frac_under_5cm=%.3f",
+                "misses", "identity", m.pairs, m.misses, m.supported, m.best_share);
   return buf;
 }
 

@@ -76,6 +76,27 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
 /** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...". */
 std::string formatSearchFloor(const SearchFloor& floor);
 
+/** The pairs that `plicp+search` (benchmarkMatchers()) puts 5 cm or more from the reference
+ * from identity, and in how many of them the pair's own scans support the reference. Such a
+ * miss is *supported* when PLICP started at the reference motion stays within 5 cm of it (the
+ * pair has an optimum there) and that match beats PLICP's started at the chosen pose by
+ * either measure a choice could use: more inliers, or a higher score on the search's grid of
+ * the reference scan (correlative::scoreAt, no motion prior). In the other misses the pair
+ * favours the chosen pose, or ties, or has no optimum at the reference: no choice made from
+ * the pair alone mends them. `best_share`: the share under 5 cm with every supported miss
+ * mended, an upper bound for any such choice. */
+struct MissExplanation
+{
+  size_t pairs = 0, misses = 0, supported = 0;
+  double best_share = 0;
+};
+MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
+                              const correlative::CorrelativeParams& search_params,
+                              const tracking::TrackingParams& tracking = {});
+
+/** "misses        init=identity  pairs=... misses=... supported=... best_frac_under_5cm=...". */
+std::string formatMisses(const MissExplanation& m);
+
 /** One line per row: "plicp init=identity median_us=... p95_us=... ..." (plicp+search rows end
  * with "searched=N"). */
 std::string formatRow(const MatcherRow& row);

@@ -13,21 +13,27 @@ namespace
 {
 using mrpt::poses::CPose2D;
 
-/** Scans every 0.2 m and 2 deg along a straight walk through the room, with their poses. */
-swslam::io::ScansWithTruth roomWalk(size_t n)
+/** Scans of `beams` rays over 180 deg taken at `poses` in `world`, with the poses as their truth. */
+swslam::io::ScansWithTruth scansAt(const swslam::test::World& world, const std::vector<CPose2D>& poses, size_t beams,
+                                   double max_range, double noise, unsigned seed)
 {
-  const auto world = swslam::test::roomWorld();
-  std::mt19937 rng(7);
+  std::mt19937 rng(seed);
   swslam::io::ScansWithTruth data;
-  for (size_t k = 0; k < n; k++)
+  for (const CPose2D& pose : poses)
   {
-    const CPose2D pose(-3.0 + 0.2 * k, -1.0 + 0.05 * k, 0.035 * k);
-    auto obs = std::make_shared<mrpt::obs::CObservation2DRangeScan>(
-        swslam::test::simulateObservation(world, pose, 361, M_PI, 30, 0.01, rng));
-    data.scans.push_back(obs);
+    data.scans.push_back(std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+        swslam::test::simulateObservation(world, pose, beams, M_PI, max_range, noise, rng)));
     data.truth.push_back(pose);
   }
   return data;
+}
+
+/** Scans every 0.2 m and 2 deg along a straight walk through the room, with their poses. */
+swslam::io::ScansWithTruth roomWalk(size_t n)
+{
+  std::vector<CPose2D> poses;
+  for (size_t k = 0; k < n; k++) poses.emplace_back(-3.0 + 0.2 * k, -1.0 + 0.05 * k, 0.035 * k);
+  return scansAt(swslam::test::roomWorld(), poses, 361, 30, 0.01, 7);
 }
 }  // namespace
 
@@ -110,15 +116,8 @@ TEST(MatcherBenchmark, FromIdentityPlicpSearchSearchesTheGuessAsTrackingDoes)
   // a run's first match (search_first_match), every step comes from the end wall.
   auto world = swslam::test::corridorWorld();
   world.segments.push_back({6, -1, 6, 1});
-  std::mt19937 rng(3);
-  swslam::io::ScansWithTruth data;
-  for (int k = 0; k < 4; k++)
-  {
-    const CPose2D pose(1.0 * k, 0, 0);
-    data.scans.push_back(std::make_shared<mrpt::obs::CObservation2DRangeScan>(
-        swslam::test::simulateObservation(world, pose, 181, M_PI, 8, 0.01, rng)));
-    data.truth.push_back(pose);
-  }
+  const auto data = scansAt(world, {CPose2D(0, 0, 0), CPose2D(1, 0, 0), CPose2D(2, 0, 0), CPose2D(3, 0, 0)}, 181, 8,
+                            0.01, 3);
   auto row = [&](bool search_guesses, const std::string& init) {
     swslam::tracking::TrackingParams tracking;
     tracking.search_first_match = search_guesses;
@@ -137,4 +136,39 @@ TEST(MatcherBenchmark, FromIdentityPlicpSearchSearchesTheGuessAsTrackingDoes)
   // The reference motion is measured: searching guesses changes nothing there.
   EXPECT_EQ(row(true, "reference").searched, row(false, "reference").searched);
   EXPECT_NE(swslam::bench::formatRow(searched).find(" searched=3"), std::string::npos);
+}
+
+TEST(MatcherBenchmark, MissesAreSupportedOnlyWhereThePairFavoursTheReference)
+{
+  // Without the search, PLICP from identity misses turns of 60 deg in the room, and each
+  // pair's own scans support the reference: PLICP from it stays, with more inliers than at the
+  // pose it chose.
+  std::vector<CPose2D> turns;
+  for (int k = 0; k < 4; k++) turns.emplace_back(-2.0 + 0.5 * k, 0.2 * k, 1.05 * k);
+  const auto room = scansAt(swslam::test::roomWorld(), turns, 361, 30, 0.01, 7);
+  swslam::correlative::CorrelativeParams off;
+  off.enabled = false;
+  const auto plain = swslam::bench::explainMisses(room, 1, swslam::plicp::PlicpParams(), off);
+  EXPECT_EQ(plain.pairs, 3u);
+  EXPECT_EQ(plain.misses, 3u);
+  EXPECT_EQ(plain.supported, 3u);
+  EXPECT_DOUBLE_EQ(plain.best_share, 1.0);
+  // With the search, no misses.
+  const auto searched =
+      swslam::bench::explainMisses(room, 1, swslam::plicp::PlicpParams(), swslam::correlative::CorrelativeParams());
+  EXPECT_EQ(searched.misses, 0u);
+  EXPECT_DOUBLE_EQ(searched.best_share, 1.0);
+
+  // Two parallel walls and nothing else, scanned every 1 m: every pose along them fits as well
+  // as the reference, so no miss is supported (PLICP from either keeps it, with the same inliers
+  // and score), and the best share is what the matcher got.
+  const auto walls = scansAt(swslam::test::corridorWorld(),
+                             {CPose2D(0, 0, 0), CPose2D(1, 0, 0), CPose2D(2, 0, 0), CPose2D(3, 0, 0)}, 181, 8, 0.0, 5);
+  const auto along = swslam::bench::explainMisses(walls, 1, swslam::plicp::PlicpParams(), off);
+  EXPECT_EQ(along.misses, 3u);
+  EXPECT_EQ(along.supported, 0u);
+  EXPECT_DOUBLE_EQ(along.best_share, 0.0);
+  EXPECT_NE(swslam::bench::formatMisses(along).find("misses        init=identity  pairs=3 misses=3 supported=0 "
+                                                     "best_frac_under_5cm=0.000"),
+            std::string::npos);
 }
