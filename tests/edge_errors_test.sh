@@ -57,7 +57,8 @@ grep -q '^| loop | 2 | 2 | 0.500 | 0.500 | 0.00 | 0.00 | 0.75 | 0.95 |$' <<< "$o
 [[ $(grep -c '^consecutive ' <<< "$out" || true) == 0 ]] || fail "exact edges listed"
 
 # A larger bound lets the loop pass.
-"$py" "$script" "$work/run" "$work/gt.tum" --max-xy 0.6 | grep -q '^| loop | 2 | 0 |' || fail "--max-xy"
+out=$("$py" "$script" "$work/run" "$work/gt.tum" --max-xy 0.6)
+grep -q '^| loop | 2 | 0 |' <<< "$out" || fail "--max-xy"
 
 # A malformed reference line: exit 1, file and line named.
 printf '0.0 0 0\n' > "$work/bad.tum"

@@ -31,7 +31,7 @@ check() {  # name, config kind, command...
     echo "FAIL: $name took the $kind config (exit 0)"; fail=1
   elif ! grep -q -- "${expect[$kind]}" <<< "$out"; then
     echo "FAIL: $name on the $kind config: exit $code without the expected message:"
-    echo "$out" | head -3; fail=1
+    head -3 <<< "$out"; fail=1
   else
     echo "ok: $name rejects the $kind config (exit $code): $(grep -m1 -- "${expect[$kind]}" <<< "$out" | cut -c1-110)"
   fi

@@ -32,7 +32,7 @@ for sig in INT TERM; do
   if ! ((n > 0 && n < total)); then
     echo "FAIL: SIG$sig: $n of $total poses written"; fail=1
   fi
-  ls "$out" | grep -q '\.tmp' && { echo "FAIL: SIG$sig: temporary file left"; fail=1; }
+  grep -q '\.tmp' <<< "$(ls "$out")" && { echo "FAIL: SIG$sig: temporary file left"; fail=1; }
   echo "SIG$sig: exit $code, $n of $total poses written"
 done
 
