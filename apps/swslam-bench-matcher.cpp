@@ -4,7 +4,9 @@
 #include <swslam/system/config.h>
 
 
+#include <algorithm>
 #include <iostream>
+#include <stdexcept>
 
 int main(int argc, char** argv)
 {
@@ -35,8 +37,8 @@ int main(int argc, char** argv)
     std::cout << "# " << input.getValue() << ": " << data.scans.size() << " scans of "
               << s0.getScanSize() << " beams over " << s0.aperture * 180 / M_PI << " deg, stride "
               << stride.getValue() << "\n";
-    for (const auto& row : swslam::bench::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search, tracking))
-      std::cout << swslam::bench::formatRow(row) << std::endl;
+    const auto rows = swslam::bench::benchmarkMatchers(data, stride.getValue(), params, only.getValue(), search, tracking);
+    for (const auto& row : rows) std::cout << swslam::bench::formatRow(row) << std::endl;
     if (floor_arg.getValue())
     {
       std::cout << swslam::bench::formatFloor(swslam::bench::plicpFloor(data, stride.getValue(), params)) << std::endl;
@@ -44,8 +46,16 @@ int main(int argc, char** argv)
                 << std::endl;
     }
     if (misses_arg.getValue())
-      std::cout << swslam::bench::formatMisses(swslam::bench::explainMisses(data, stride.getValue(), params, search, tracking))
+    {
+      const auto from_identity = std::find_if(rows.begin(), rows.end(), [](const auto& r) {
+        return r.method == "plicp+search" && r.init == "identity";
+      });
+      if (from_identity == rows.end())
+        throw std::invalid_argument("--misses needs the plicp+search rows (no --method, or --method plicp+search)");
+      std::cout << swslam::bench::formatMisses(
+                       swslam::bench::explainMisses(data, stride.getValue(), *from_identity, params, search))
                 << std::endl;
+    }
     return 0;
   }
   catch (const std::exception& e)

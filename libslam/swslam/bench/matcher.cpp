@@ -146,7 +146,9 @@ std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t
   {
     for (const auto& [name, match] : methods)
     {
-      MatcherRow row{name, init};
+      MatcherRow row;
+      row.method = name;
+      row.init = init;
       std::vector<double> times_us, trans_err;
       double sq_t = 0, sq_r = 0, iters = 0;
       for (size_t k = 0; k + stride < data.scans.size(); k += stride)
@@ -165,6 +167,7 @@ std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t
         row.failures += e.ok ? 0 : 1;
         row.searched += e.searched ? 1 : 0;
         row.pairs++;
+        row.estimates.push_back({e.pose, e.ok});
       }
       if (row.pairs == 0) continue;
       row.median_us = quantile(times_us, 0.5);
@@ -290,19 +293,22 @@ std::string formatSearchFloor(const SearchFloor& f)
   return buf;
 }
 
-MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
-                              const correlative::CorrelativeParams& search_params,
-                              const tracking::TrackingParams& tracking)
+MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const MatcherRow& from_identity,
+                              const plicp::PlicpParams& plicp_params,
+                              const correlative::CorrelativeParams& search_params)
 {
+  if (from_identity.method != "plicp+search" || from_identity.init != "identity")
+    throw std::invalid_argument("explainMisses: needs the plicp+search row from identity, not " +
+                                from_identity.method + " from " + from_identity.init);
   MissExplanation out;
-  const MatcherFn match = plicpSearchMatcher(plicp_params, search_params, tracking);
-  for (size_t k = 0; k + stride < data.scans.size(); k += stride)
+  for (size_t k = 0; k + stride < data.scans.size(); k += stride, out.pairs++)
   {
+    if (out.pairs >= from_identity.estimates.size())
+      throw std::invalid_argument("explainMisses: the row has fewer pairs than the data at this stride");
+    const MatcherRow::PairEstimate& e = from_identity.estimates[out.pairs];
     const CObservation2DRangeScan& a = *data.scans[k];
     const CObservation2DRangeScan& b = *data.scans[k + stride];
     const CPose2D ref_motion = data.truth[k + stride] - data.truth[k];
-    out.pairs++;
-    const Estimate e = match(a, b, CPose2D(), false);
     if ((e.pose.translation() - ref_motion.translation()).norm() < kUnder) continue;
     out.misses++;
     // Both poses' own PLICP matches, in the reference sensor frame.
@@ -327,6 +333,8 @@ MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, con
     };
     if (score(at_ref.pose) > score(at_chosen.pose)) out.supported++;
   }
+  if (out.pairs != from_identity.estimates.size())
+    throw std::invalid_argument("explainMisses: the row has more pairs than the data at this stride");
   if (out.pairs > 0) out.best_share = static_cast<double>(out.pairs - out.misses + out.supported) / out.pairs;
   return out;
 }

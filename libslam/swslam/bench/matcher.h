@@ -23,6 +23,14 @@ struct MatcherRow
   size_t searched = 0;  ///< plicp+search: the pairs the correlative search ran for
   double median_us = 0, p95_us = 0, mean_iters = 0;
   double trans_median_m = 0, trans_rmse_m = 0, rot_rmse_deg = 0, frac_under_5cm = 0;
+  /** Each pair's estimate of the vehicle's relative pose, in pair order, and whether the
+   * match succeeded (a failed one carries its guess). */
+  struct PairEstimate
+  {
+    mrpt::poses::CPose2D pose;
+    bool ok = true;
+  };
+  std::vector<PairEstimate> estimates;
 };
 
 /** Runs every method (or only the one named `only`, if not empty) from each initial guess on
@@ -76,8 +84,9 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
 /** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...". */
 std::string formatSearchFloor(const SearchFloor& floor);
 
-/** The pairs that `plicp+search` (benchmarkMatchers()) puts 5 cm or more from the reference
- * from identity, and in how many of them the pair's own scans support the reference. Such a
+/** The pairs that `plicp+search` puts 5 cm or more from the reference from identity (its
+ * benchmarkMatchers() row `from_identity`, on the same data and stride; std::invalid_argument
+ * for another row), and in how many of them the pair's own scans support the reference. Such a
  * miss is *supported* when PLICP started at the reference motion stays within 5 cm of it (the
  * pair has an optimum there) and that match beats PLICP's started at the chosen pose by
  * either measure a choice could use: more inliers, or a higher score on the search's grid of
@@ -90,9 +99,9 @@ struct MissExplanation
   size_t pairs = 0, misses = 0, supported = 0;
   double best_share = 0;
 };
-MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
-                              const correlative::CorrelativeParams& search_params,
-                              const tracking::TrackingParams& tracking = {});
+MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const MatcherRow& from_identity,
+                              const plicp::PlicpParams& plicp_params,
+                              const correlative::CorrelativeParams& search_params);
 
 /** "misses        init=identity  pairs=... misses=... supported=... best_frac_under_5cm=...". */
 std::string formatMisses(const MissExplanation& m);

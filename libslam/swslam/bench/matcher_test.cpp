@@ -138,6 +138,19 @@ TEST(MatcherBenchmark, FromIdentityPlicpSearchSearchesTheGuessAsTrackingDoes)
   EXPECT_NE(swslam::bench::formatRow(searched).find(" searched=3"), std::string::npos);
 }
 
+namespace
+{
+/** explainMisses() of the plicp+search row from identity on `data`, pairs (k, k + 1). */
+swslam::bench::MissExplanation missesOf(const swslam::io::ScansWithTruth& data,
+                                        const swslam::correlative::CorrelativeParams& search)
+{
+  for (const auto& r : swslam::bench::benchmarkMatchers(data, 1, swslam::plicp::PlicpParams(), "plicp+search", search))
+    if (r.init == "identity") return swslam::bench::explainMisses(data, 1, r, swslam::plicp::PlicpParams(), search);
+  ADD_FAILURE() << "no plicp+search row from identity";
+  return {};
+}
+}  // namespace
+
 TEST(MatcherBenchmark, MissesAreSupportedOnlyWhereThePairFavoursTheReference)
 {
   // Without the search, PLICP from identity misses turns of 60 deg in the room, and each
@@ -148,14 +161,13 @@ TEST(MatcherBenchmark, MissesAreSupportedOnlyWhereThePairFavoursTheReference)
   const auto room = scansAt(swslam::test::roomWorld(), turns, 361, 30, 0.01, 7);
   swslam::correlative::CorrelativeParams off;
   off.enabled = false;
-  const auto plain = swslam::bench::explainMisses(room, 1, swslam::plicp::PlicpParams(), off);
+  const auto plain = missesOf(room, off);
   EXPECT_EQ(plain.pairs, 3u);
   EXPECT_EQ(plain.misses, 3u);
   EXPECT_EQ(plain.supported, 3u);
   EXPECT_DOUBLE_EQ(plain.best_share, 1.0);
   // With the search, no misses.
-  const auto searched =
-      swslam::bench::explainMisses(room, 1, swslam::plicp::PlicpParams(), swslam::correlative::CorrelativeParams());
+  const auto searched = missesOf(room, swslam::correlative::CorrelativeParams());
   EXPECT_EQ(searched.misses, 0u);
   EXPECT_DOUBLE_EQ(searched.best_share, 1.0);
 
@@ -164,11 +176,16 @@ TEST(MatcherBenchmark, MissesAreSupportedOnlyWhereThePairFavoursTheReference)
   // and score), and the best share is what the matcher got.
   const auto walls = scansAt(swslam::test::corridorWorld(),
                              {CPose2D(0, 0, 0), CPose2D(1, 0, 0), CPose2D(2, 0, 0), CPose2D(3, 0, 0)}, 181, 8, 0.0, 5);
-  const auto along = swslam::bench::explainMisses(walls, 1, swslam::plicp::PlicpParams(), off);
+  const auto along = missesOf(walls, off);
   EXPECT_EQ(along.misses, 3u);
   EXPECT_EQ(along.supported, 0u);
   EXPECT_DOUBLE_EQ(along.best_share, 0.0);
   EXPECT_NE(swslam::bench::formatMisses(along).find("misses        init=identity  pairs=3 misses=3 supported=0 "
                                                      "best_frac_under_5cm=0.000"),
             std::string::npos);
+  // Another row, or one from another stride, is refused.
+  const auto rows = swslam::bench::benchmarkMatchers(walls, 1, swslam::plicp::PlicpParams(), "plicp+search", off);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_THROW(swslam::bench::explainMisses(walls, 1, rows[1], swslam::plicp::PlicpParams(), off), std::invalid_argument);
+  EXPECT_THROW(swslam::bench::explainMisses(walls, 2, rows[0], swslam::plicp::PlicpParams(), off), std::invalid_argument);
 }
