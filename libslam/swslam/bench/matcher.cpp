@@ -37,9 +37,6 @@ struct Estimate
 using MatcherFn = std::function<Estimate(const CObservation2DRangeScan&, const CObservation2DRangeScan&,
                                          const CPose2D& guess, bool guess_measured)>;
 
-/** [m] a pair's translation error below this counts as right (frac_under_5cm). */
-constexpr double kUnder = 0.05;
-
 double quantile(std::vector<double> v, double q)
 {
   if (v.empty()) return 0;
@@ -177,7 +174,7 @@ std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t
       row.trans_rmse_m = std::sqrt(sq_t / row.pairs);
       row.rot_rmse_deg = std::sqrt(sq_r / row.pairs) * 180 / M_PI;
       row.frac_under_5cm =
-          std::count_if(trans_err.begin(), trans_err.end(), [](double x) { return x < kUnder; }) /
+          std::count_if(trans_err.begin(), trans_err.end(), [](double x) { return x < geometry::kMotionAgreement; }) /
           static_cast<double>(row.pairs);
       rows.push_back(row);
     }
@@ -309,7 +306,7 @@ MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, con
     const CObservation2DRangeScan& a = *data.scans[k];
     const CObservation2DRangeScan& b = *data.scans[k + stride];
     const CPose2D ref_motion = data.truth[k + stride] - data.truth[k];
-    if ((e.pose.translation() - ref_motion.translation()).norm() < kUnder) continue;
+    if ((e.pose.translation() - ref_motion.translation()).norm() < geometry::kMotionAgreement) continue;
     out.misses++;
     // Both poses' own PLICP matches, in the reference sensor frame.
     const CPose2D s(a.sensorPose);
@@ -317,7 +314,7 @@ MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, con
     const sensor::Scan cur = sensor::scanFromObservation(b);
     const plicp::MatchResult at_ref = plicp::matchScans(ref, cur, geometry::sensorMotion(s, ref_motion), plicp_params);
     if (!at_ref.ok() ||
-        (geometry::vehicleMotion(s, at_ref.pose).translation() - ref_motion.translation()).norm() >= kUnder)
+        (geometry::vehicleMotion(s, at_ref.pose).translation() - ref_motion.translation()).norm() >= geometry::kMotionAgreement)
       continue;  // no optimum of the pair at the reference
     const plicp::MatchResult at_chosen = plicp::matchScans(ref, cur, geometry::sensorMotion(s, e.pose), plicp_params);
     if (!e.ok || !at_chosen.ok() || at_ref.inliers > at_chosen.inliers)

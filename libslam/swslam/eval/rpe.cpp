@@ -49,7 +49,7 @@ RpeResult relativePoseError(const std::vector<PosePair>& pairs,
     const auto e = relativeError(pairs[i].est, pairs[j].est, pairs[j].gt - pairs[i].gt);
     trans.push_back(e.norm());
     rot.push_back(std::abs(mrpt::math::wrapToPi(e.phi())));
-    within += trans.back() < kRpeAgreement ? 1 : 0;
+    within += trans.back() < geometry::kMotionAgreement ? 1 : 0;
   }
   const double share = segments.empty() ? std::nan("") : within / static_cast<double>(segments.size());
   return {errorStats(std::move(trans)), errorStats(std::move(rot)), share};

@@ -7,6 +7,7 @@
 
 #include <swslam/eval/association.h>
 #include <swslam/eval/error_stats.h>
+#include <swslam/geometry/sensor_frame.h>
 
 namespace swslam::eval
 {
@@ -28,14 +29,11 @@ mrpt::poses::CPose2D relativeError(const mrpt::poses::CPose2D& a_i,
                                    const mrpt::poses::CPose2D& a_j,
                                    const mrpt::poses::CPose2D& expected);
 
-/** The matcher benchmark's bar for a relative pose (doc/plicp.md): its translation within 5 cm. */
-constexpr double kRpeAgreement = 0.05;  ///< [m]
-
 struct RpeResult
 {
   ErrorStats translation;  ///< |trans(E_ij)|, metres
   ErrorStats rotation;     ///< |angle(E_ij)|, radians
-  double share_within_5cm = 0;  ///< of the pairs, those with |trans(E_ij)| < kRpeAgreement (NaN: none)
+  double share_within_5cm = 0;  ///< of the pairs, those with |trans(E_ij)| < geometry::kMotionAgreement (NaN: none)
 };
 
 /** RPE over the given pairs of indices into `pairs`. */

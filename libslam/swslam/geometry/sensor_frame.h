@@ -8,6 +8,11 @@
 
 namespace swslam::geometry
 {
+/** [m] A motion estimate agrees with a reference motion when their translations differ by
+ * less than this: the matcher benchmark's "under 5 cm" and the RPE's share within it
+ * (doc/plicp.md, doc/evaluation.md). */
+constexpr double kMotionAgreement = 0.05;
+
 /** Vehicle motion s (+) q (+) s^-1 from sensor motion q. */
 mrpt::poses::CPose2D vehicleMotion(const mrpt::poses::CPose2D& sensor_on_vehicle,
                                    const mrpt::poses::CPose2D& sensor_motion);
