@@ -231,7 +231,7 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
                         const correlative::CorrelativeParams& search_params, const tracking::TrackingParams& tracking)
 {
   SearchFloor f;
-  std::vector<double> first, grid, bnb, total;
+  std::vector<double> first, grid, bnb, total, evaluated;
   // Identity is a guess: with search_first_match it is searched first, and PLICP runs from the
   // search's best pose; else PLICP from identity runs first, and the search only if it says so.
   const bool search_first = correlative::searchFirst(false, tracking.search_first_match);
@@ -263,6 +263,21 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
         pyramid, correlative::thinPoints(cur.points, search_params.resolution, search_params.max_range),
         correlative::searchWindow(search_params, guess), search_params.min_score);
     const double t_bnb = timer.Tac();
+    if (best)
+    {
+      evaluated.push_back(static_cast<double>(best->bounds_evaluated));
+      const size_t levels = best->evaluated_by_level.size();
+      if (f.evaluated_by_level.size() < levels)
+      {
+        f.evaluated_by_level.resize(levels, 0.0);
+        f.expanded_by_level.resize(levels, 0.0);
+      }
+      for (size_t h = 0; h < levels; h++)
+      {
+        f.evaluated_by_level[h] += static_cast<double>(best->evaluated_by_level[h]);
+        f.expanded_by_level[h] += static_cast<double>(best->expanded_by_level[h]);
+      }
+    }
     if (search_first)
     {
       timer.Tic();
@@ -278,6 +293,12 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
   f.grid_us = quantile(grid, 0.5);
   f.bnb_us = quantile(bnb, 0.5);
   f.total_us = quantile(total, 0.5);
+  f.evaluated_median = evaluated.empty() ? 0.0 : quantile(evaluated, 0.5);
+  for (size_t h = 0; h < f.evaluated_by_level.size(); h++)
+  {
+    f.evaluated_by_level[h] /= static_cast<double>(evaluated.size());
+    f.expanded_by_level[h] /= static_cast<double>(evaluated.size());
+  }
   return f;
 }
 
@@ -285,9 +306,17 @@ std::string formatSearchFloor(const SearchFloor& f)
 {
   char buf[256];
   std::snprintf(buf, sizeof(buf),
-                "%-13s init=%-9s pairs=%zu searched=%zu median_us=%.1f plicp_us=%.1f grid_us=%.1f bnb_us=%.1f",
-                "search-floor", "identity", f.pairs, f.searched, f.total_us, f.plicp_us, f.grid_us, f.bnb_us);
-  return buf;
+                "%-13s init=%-9s pairs=%zu searched=%zu median_us=%.1f plicp_us=%.1f grid_us=%.1f bnb_us=%.1f "
+                "evaluated_median=%.0f by_level=",
+                "search-floor", "identity", f.pairs, f.searched, f.total_us, f.plicp_us, f.grid_us, f.bnb_us,
+                f.evaluated_median);
+  std::string out = buf;
+  for (size_t k = f.evaluated_by_level.size(); k-- > 0;)
+  {
+    std::snprintf(buf, sizeof(buf), "%.0f/%.0f%s", f.evaluated_by_level[k], f.expanded_by_level[k], k > 0 ? "," : "");
+    out += buf;
+  }
+  return out;
 }
 
 MissExplanation explainMisses(const io::ScansWithTruth& data, size_t stride, const MatcherRow& from_identity,

@@ -76,12 +76,19 @@ struct SearchFloor
 {
   size_t pairs = 0, searched = 0;
   double plicp_us = 0, grid_us = 0, bnb_us = 0, total_us = 0;
+  double evaluated_median = 0;  ///< candidates the branch and bound scored, median per pair
+  /** Per pyramid level h (index h), the mean per searched pair of the candidates scored at it
+   * and of those split into their children (correlative::SearchResult): where the search's
+   * work lies. */
+  std::vector<double> evaluated_by_level, expanded_by_level;
 };
 SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
                         const correlative::CorrelativeParams& search_params,
                         const tracking::TrackingParams& tracking = {});
 
-/** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...". */
+/** "search-floor init=identity pairs=... searched=... median_us=... plicp_us=... grid_us=... bnb_us=...
+ * evaluated_median=... by_level=E/X,...", the levels from the top down, E the mean candidates
+ * scored and X the mean split at each. */
 std::string formatSearchFloor(const SearchFloor& floor);
 
 /** The pairs that `plicp+search` puts 5 cm or more from the reference from identity (its

@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <swslam/bench/matcher.h>
+#include <swslam/correlative/search.h>
 
 #include <gtest/gtest.h>
 
@@ -92,6 +93,21 @@ TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
   EXPECT_GE(f.total_us, f.plicp_us);
   EXPECT_GE(f.total_us, f.grid_us);
   EXPECT_GE(f.total_us, f.bnb_us);
+  // Where the branch and bound's work lies: the pyramid's levels for the default window, each
+  // level's candidates the children of splits above it, and the top's every angle's blocks.
+  const swslam::correlative::CorrelativeParams defaults;
+  ASSERT_EQ(f.evaluated_by_level.size(),
+            static_cast<size_t>(swslam::correlative::depthForWindow(defaults.window_xy, defaults.resolution)) + 1);
+  EXPECT_DOUBLE_EQ(f.evaluated_by_level.back(), 360.0);
+  double total = 0;
+  for (size_t h = 0; h < f.evaluated_by_level.size(); h++)
+  {
+    total += f.evaluated_by_level[h];
+    if (h + 1 < f.evaluated_by_level.size()) EXPECT_LE(f.evaluated_by_level[h], 4 * f.expanded_by_level[h + 1] + 1e-9);
+  }
+  EXPECT_GT(f.evaluated_median, 360.0);
+  EXPECT_LT(f.evaluated_median, 2 * total);
+  EXPECT_NE(swslam::bench::formatSearchFloor(f).find("by_level="), std::string::npos);
   // A search that never triggers: no pair is searched, and no time is reported, unless
   // identity, a guess, is searched as tracking searches a run's first match.
   swslam::correlative::CorrelativeParams never;

@@ -182,8 +182,9 @@ struct Candidate
 class BranchAndBound
 {
  public:
-  BranchAndBound(const ScorePyramid& p, const Lattice& lattice, int32_t needed, double floor)
-      : pyramid_(p), lattice_(lattice), needed_(needed), floor_(floor)
+  BranchAndBound(const ScorePyramid& p, const Lattice& lattice, int32_t needed, double floor, int top)
+      : evaluated_by_level_(static_cast<size_t>(top) + 1, 0), expanded_by_level_(static_cast<size_t>(top) + 1, 0),
+        pyramid_(p), lattice_(lattice), needed_(needed), floor_(floor)
   {
   }
   Candidate bounded(int k, int i, int j, int h)
@@ -193,6 +194,7 @@ class BranchAndBound
   Candidate withSum(int k, int i, int j, int h, int32_t sum)
   {
     evaluated_++;
+    evaluated_by_level_[h]++;
     const int last = lattice_.n(), side = (1 << h) - 1;
     return {k, i, j, sum, lattice_.objective(sum, k, i, std::min(i + side, last), j, std::min(j + side, last))};
   }
@@ -219,6 +221,7 @@ class BranchAndBound
         best_ = c;
         continue;
       }
+      expanded_by_level_[h]++;
       const int s = 1 << (h - 1);
       std::array<Candidate, 4> children;
       int count = 0;
@@ -239,6 +242,7 @@ class BranchAndBound
   }
   std::optional<Candidate> best_;
   size_t evaluated_ = 0;
+  std::vector<size_t> evaluated_by_level_, expanded_by_level_;
 
  private:
   const ScorePyramid& pyramid_;
@@ -291,7 +295,7 @@ std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
   if (points.empty() || base.cells.empty()) return std::nullopt;
   const Lattice lattice(base, points, w);
   const int top = std::min(pyramid.depth(), depthForWindow(w.half_xy, base.resolution));
-  BranchAndBound bnb(pyramid, lattice, threshold(min_score, points.size()), min_objective);
+  BranchAndBound bnb(pyramid, lattice, threshold(min_score, points.size()), min_objective, top);
   std::vector<Candidate> cands;
   const int n = lattice.n();
   for (int k = 0; k < lattice.angleCount(); k++)
@@ -300,7 +304,10 @@ std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
   bnb.descend(cands.data(), cands.data() + cands.size(), top);
   if (!bnb.best_) return std::nullopt;
   const Candidate& b = *bnb.best_;
-  return lattice.result(b.k, b.i, b.j, b.sum, bnb.evaluated_);
+  SearchResult r = lattice.result(b.k, b.i, b.j, b.sum, bnb.evaluated_);
+  r.evaluated_by_level = std::move(bnb.evaluated_by_level_);
+  r.expanded_by_level = std::move(bnb.expanded_by_level_);
+  return r;
 }
 
 std::optional<SearchResult> searchBruteForce(const ScoreGrid& grid,

@@ -47,6 +47,10 @@ struct SearchResult
   double score = 0;             ///< mean cell value of the points / 255, in [-1, 1] (free space < 0)
   double objective = 0;         ///< the score less the costs (what the search maximises)
   size_t bounds_evaluated = 0;  ///< candidates scored (any level): the search's cost
+  /** Per pyramid level h (index h, up to the search's top level): the candidates scored at
+   * it, and those of them split into their four children (neither pruned by their bound nor
+   * left for min_score). Branch and bound only. */
+  std::vector<size_t> evaluated_by_level, expanded_by_level;
 };
 
 /** The window's rotations, in the order searched. */

@@ -160,6 +160,24 @@ TEST(CorrelativeSearch, BranchAndBoundEqualsBruteForce)
       EXPECT_GE(fast->score, min_score);
       EXPECT_NEAR(objective(w, fast->score, fast->pose), fast->objective, 1e-12);
       EXPECT_LT(fast->bounds_evaluated, slow->bounds_evaluated / 4) << "trial " << trial;
+      // Per level: the top level scores every angle's blocks, each level below only the
+      // children of the blocks split above it (up to four each, fewer at the window's edge).
+      const int top = static_cast<int>(fast->evaluated_by_level.size()) - 1;
+      ASSERT_EQ(top, depth);
+      ASSERT_EQ(fast->expanded_by_level.size(), fast->evaluated_by_level.size());
+      const int n = static_cast<int>(std::floor(w.half_xy / res + 1e-9)), blocks = (2 * n + (1 << top)) >> top;
+      EXPECT_EQ(fast->evaluated_by_level[top], windowAngles(w).size() * blocks * blocks) << "trial " << trial;
+      size_t total = 0;
+      for (int h = 0; h <= top; h++)
+      {
+        total += fast->evaluated_by_level[h];
+        EXPECT_LE(fast->expanded_by_level[h], fast->evaluated_by_level[h]);
+        if (h == 0) EXPECT_EQ(fast->expanded_by_level[h], 0u);
+        if (h == top) continue;
+        EXPECT_LE(fast->evaluated_by_level[h], 4 * fast->expanded_by_level[h + 1]) << "trial " << trial;
+        EXPECT_GE(fast->evaluated_by_level[h], fast->expanded_by_level[h + 1]) << "trial " << trial;
+      }
+      EXPECT_EQ(total, fast->bounds_evaluated);
       // The reported pose is on the lattice and scores what was reported.
       const Eigen::Vector2d cells = (fast->pose.head<2>() - w.centre.head<2>()) / res;
       EXPECT_NEAR(cells.x(), std::round(cells.x()), 1e-9);
