@@ -77,9 +77,9 @@ struct SearchFloor
   size_t pairs = 0, searched = 0;
   double plicp_us = 0, grid_us = 0, bnb_us = 0, total_us = 0;
   double evaluated_median = 0;  ///< candidates the branch and bound scored, median per pair
-  /** Per pyramid level h (index h), the mean per searched pair of the candidates scored at it
-   * and of those split into their children (correlative::SearchResult): where the search's
-   * work lies. */
+  /** Per pyramid level h (index h), the mean per pair of the candidates scored at it and of
+   * those split into their children (correlative::SearchResult): where the search's work lies.
+   * These two count the searches that found a pose (a search with none reports no counts). */
   std::vector<double> evaluated_by_level, expanded_by_level;
 };
 SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const plicp::PlicpParams& plicp_params,
