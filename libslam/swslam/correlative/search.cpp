@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <tuple>
 
 namespace swslam::correlative
@@ -193,7 +194,6 @@ class BranchAndBound
   }
   Candidate withSum(int k, int i, int j, int h, int32_t sum)
   {
-    evaluated_++;
     evaluated_by_level_[h]++;
     const int last = lattice_.n(), side = (1 << h) - 1;
     return {k, i, j, sum, lattice_.objective(sum, k, i, std::min(i + side, last), j, std::min(j + side, last))};
@@ -241,7 +241,6 @@ class BranchAndBound
     }
   }
   std::optional<Candidate> best_;
-  size_t evaluated_ = 0;
   std::vector<size_t> evaluated_by_level_, expanded_by_level_;
 
  private:
@@ -304,7 +303,8 @@ std::optional<SearchResult> searchBranchAndBound(const ScorePyramid& pyramid,
   bnb.descend(cands.data(), cands.data() + cands.size(), top);
   if (!bnb.best_) return std::nullopt;
   const Candidate& b = *bnb.best_;
-  SearchResult r = lattice.result(b.k, b.i, b.j, b.sum, bnb.evaluated_);
+  SearchResult r = lattice.result(b.k, b.i, b.j, b.sum,
+                                  std::accumulate(bnb.evaluated_by_level_.begin(), bnb.evaluated_by_level_.end(), size_t{0}));
   r.evaluated_by_level = std::move(bnb.evaluated_by_level_);
   r.expanded_by_level = std::move(bnb.expanded_by_level_);
   return r;
