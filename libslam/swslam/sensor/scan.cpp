@@ -78,4 +78,12 @@ Scan scanFromCheckedObservation(const mrpt::obs::CObservation2DRangeScan& obs, d
   return s;
 }
 
+double rotationLength(const std::vector<Eigen::Vector2d>& points)
+{
+  double sum = 0;
+  for (const auto& p : points) sum += p.squaredNorm();
+  if (points.empty() || !(sum > 0) || !std::isfinite(sum)) return 1.0;
+  return std::sqrt(sum / static_cast<double>(points.size()));
+}
+
 }  // namespace swslam::sensor

@@ -62,4 +62,9 @@ Scan scanFromCheckedObservation(const mrpt::obs::CObservation2DRangeScan& obs, d
 /** Angle [rad] of beam `i` of `n` over `aperture`, counter-clockwise, as MRPT defines it. */
 double beamAngle(size_t i, size_t n, double aperture, bool right_to_left = true);
 
+/** Root mean square distance of the points from the sensor [m], the length that scales
+ * rotations to metres (a turn of a radians moves the points by about a times it); 1 m when
+ * there are none (or all sit at the sensor). */
+double rotationLength(const std::vector<Eigen::Vector2d>& points);
+
 }  // namespace swslam::sensor

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+using swslam::sensor::rotationLength;
 using swslam::sensor::scanFromObservation;
 
 namespace
@@ -145,4 +146,12 @@ TEST(Scan, CheckedConversionEqualsTheCheckingOneAndOnlyTheCheckingOneThrows)
   obs.aperture = 0;
   EXPECT_THROW(swslam::sensor::checkObservationGeometry(obs), std::invalid_argument);
   EXPECT_THROW(swslam::sensor::scanFromObservation(obs), std::invalid_argument);
+}
+
+TEST(Scan, RotationLengthIsTheRootMeanSquareRange)
+{
+  EXPECT_NEAR(rotationLength({{3, 4}, {0, 5}}), 5, 1e-12);
+  EXPECT_NEAR(rotationLength({{1, 0}, {0, 7}}), 5, 1e-12);
+  EXPECT_EQ(rotationLength({}), 1) << "no points";
+  EXPECT_EQ(rotationLength({{0, 0}}), 1) << "all at the sensor";
 }

@@ -25,14 +25,6 @@ double residualNoiseVariance(double sum_sq_residuals, size_t n, double fallback)
   return sum_sq_residuals / static_cast<double>(n - 3);
 }
 
-double rotationLength(const std::vector<Eigen::Vector2d>& points)
-{
-  double sum = 0;
-  for (const auto& p : points) sum += p.squaredNorm();
-  if (points.empty() || !(sum > 0) || !std::isfinite(sum)) return 1.0;
-  return std::sqrt(sum / static_cast<double>(points.size()));
-}
-
 Ambiguity findWeakDirections(const Eigen::Matrix3d& cov, double length, double threshold)
 {
   Ambiguity a;

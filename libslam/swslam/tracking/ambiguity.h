@@ -37,10 +37,6 @@ double weakRatioThreshold(double noise_variance, double min_segment_length, doub
  * fitted to n point-to-line residuals; `fallback` when n <= 3. */
 double residualNoiseVariance(double sum_sq_residuals, size_t n, double fallback);
 
-/** Root mean square distance of the points from the sensor [m], the length that scales
- * rotations to metres; 1 m when there are none (or all sit at the sensor). */
-double rotationLength(const std::vector<Eigen::Vector2d>& points);
-
 /** Weak directions of a match of covariance `cov` over [x, y, theta]: the eigenvectors of the
  * normalized information S^-1 cov^-1 S^-1, S = diag(1, 1, length), whose eigenvalue is below
  * `threshold` times the largest. The decomposition is of the normalized covariance (the same

@@ -54,14 +54,6 @@ TEST(Ambiguity, ThresholdIsWhatNoiseFakesTimesTheFactor)
   EXPECT_EQ(residualNoiseVariance(0.0, 0, 0.5), 0.5);
 }
 
-TEST(Ambiguity, RotationLengthIsTheRootMeanSquareRange)
-{
-  EXPECT_NEAR(rotationLength({{3, 4}, {0, 5}}), 5, 1e-12);
-  EXPECT_NEAR(rotationLength({{1, 0}, {0, 7}}), 5, 1e-12);
-  EXPECT_EQ(rotationLength({}), 1) << "no points";
-  EXPECT_EQ(rotationLength({{0, 0}}), 1) << "all at the sensor";
-}
-
 TEST(Ambiguity, AgreesWithTheInverseOfTheCovariance)
 {
   std::mt19937 rng(3);

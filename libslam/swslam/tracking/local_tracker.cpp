@@ -253,7 +253,7 @@ std::optional<graph::Constraint> LocalTracker::matchEdge(const Keyframe& from, c
   // Along a direction the pair does not constrain, the chain decides, with the variance of a
   // node made without a match: never a confident pull along a corridor.
   takePriorWhereWeak(m, *from.scan, *from.facing, scan, to.facing.get(), guess,
-                     tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy, rotationLength(scan.points));
+                     tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy, sensor::rotationLength(scan.points));
   // The chain between recent nodes is accurate to centimetres: a match far from it found
   // another local minimum (low overlap, repeated structure), not a correction.
   if ((m.pose.translation() - guess.translation()).norm() > tracking_.dense_gate_xy ||
@@ -323,7 +323,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
       takePriorWhereWeak(step.match, *last.scan, *last.facing, scan, nullptr,
                          geometry::sensorMotion(last.sensor_pose, predicted),
                          steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
-                         rotationLength(scan.points));
+                         sensor::rotationLength(scan.points));
   step.ambiguous = weak.weak + (step.two_peaks ? 1 : 0);
   step.prior_decided = weak.prior_decided;
   // A match that is one of two poses the scan cannot tell apart: its variance along their
