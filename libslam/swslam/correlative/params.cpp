@@ -31,6 +31,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   MRPT_LOAD_CONFIG_VAR_CS(common_points_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(surface_goes_on_ratio, double);
   MRPT_LOAD_CONFIG_VAR_CS(refine_correspondence_dist, double);
+  MRPT_LOAD_CONFIG_VAR_CS(prediction_decides_share, double);
   MRPT_LOAD_CONFIG_VAR_CS(steady_prior_cost, double);
   MRPT_LOAD_CONFIG_VAR_CS(steady_sigma_min, double);
   MRPT_LOAD_CONFIG_VAR_CS(steady_min_step, double);
@@ -59,6 +60,7 @@ void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   require(common_points_fraction >= 0 && common_points_fraction <= 1, "common_points_fraction must be in [0, 1]");
   require(surface_goes_on_ratio >= 0, "surface_goes_on_ratio must be >= 0");
   require(refine_correspondence_dist >= 0, "refine_correspondence_dist must be >= 0");
+  require(prediction_decides_share >= 0 && prediction_decides_share <= 1, "prediction_decides_share must be in [0, 1]");
   require(steady_prior_cost >= 0, "steady_prior_cost must be >= 0");
   require(steady_sigma_min > 0, "steady_sigma_min must be > 0");
   require(steady_min_step >= 0, "steady_min_step must be >= 0");
@@ -86,6 +88,7 @@ void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
   MRPT_SAVE_CONFIG_VAR_COMMENT(common_points_fraction, "compare the two matches on the points that can tell them apart, when at least this fraction can (0: on all)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(surface_goes_on_ratio, "a point unseen at one pose tells nothing when at the other it lies on a surface going on (the cell beyond scores this fraction of its own)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(refine_correspondence_dist, "[m] PLICP radius of the second refinement when the first scored below the search's pose (0: none)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(prediction_decides_share, "the prediction chooses between the two matches where the searched one has under this share of its strongest information along their difference (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(steady_prior_cost, "steady-motion prior: score lost at one sigma from the prediction (0: none)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(steady_sigma_min, "[m] least sigma: the spread of the recent steps");
   MRPT_SAVE_CONFIG_VAR_COMMENT(steady_min_step, "[m] the prior applies while the last 3 steps average at least this");

@@ -40,6 +40,11 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   /** [m] when PLICP from the search's pose ends at a lower objective than that pose's, it is
    * run again from it with this correspondence radius (0: never), the better one kept */
   double refine_correspondence_dist = 0.3;
+  /** where the first and the searched match differ along a direction in which the searched
+   * one has under this share of its strongest information (informationShare), the scans cannot
+   * tell them apart: the one nearer the prediction along their difference is kept
+   * (predictionChoice; 0: never) */
+  double prediction_decides_share = 0.001;
   // Steady-motion prior (tracking/steady_motion.h): while the last 3 steps average at least
   // steady_min_step, the search also loses steady_prior_cost (d / sigma)^2 at a distance d from
   // the prediction, sigma the spread of the recent steps (at least steady_sigma_min).

@@ -2,6 +2,7 @@
 
 #include <swslam/correlative/search.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -101,9 +102,50 @@ MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::V
   return out;
 }
 
+double informationShare(const Eigen::Matrix3d& covariance, const Eigen::Vector3d& difference, double length)
+{
+  if (!(length > 0) || !std::isfinite(length) || !difference.allFinite() || !covariance.allFinite()) return 1.0;
+  const Eigen::DiagonalMatrix<double, 3> S(1, 1, length);
+  Eigen::Vector3d u = S * difference;
+  if (!(u.norm() > 0)) return 1.0;
+  u.normalize();
+  // The information is the inverse of the covariance: its eigenvalues are the inverses of the
+  // covariance's, so no inverse is formed (a near-singular direction is the strongest).
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(S * covariance * S);
+  if (es.info() != Eigen::Success) return 1.0;
+  const Eigen::Vector3d variances = es.eigenvalues();
+  if (!(variances.minCoeff() > 0)) return 1.0;
+  const Eigen::Vector3d along = es.eigenvectors().transpose() * u;
+  double information = 0;
+  for (int k = 0; k < 3; k++) information += along(k) * along(k) / variances(k);
+  return std::clamp(information * variances.minCoeff(), 0.0, 1.0);
+}
+
+PredictionChoice predictionChoice(const Eigen::Vector3d& first, const Eigen::Vector3d& searched,
+                                  const Eigen::Vector3d& prediction, const Eigen::Matrix3d& searched_covariance,
+                                  double length, double share, double prediction_variance)
+{
+  auto wrapped = [](Eigen::Vector3d d) {
+    d.z() = std::remainder(d.z(), 2 * M_PI);
+    return d;
+  };
+  const Eigen::Vector3d d = wrapped(searched - first);
+  if (!(share > 0) || !(informationShare(searched_covariance, d, length) < share)) return PredictionChoice::Scans;
+  // informationShare accepted the length and the difference: both are finite, and d is not 0.
+  const Eigen::DiagonalMatrix<double, 3> S(1, 1, length);
+  const Eigen::Vector3d apart = S * d;
+  if (!(apart.squaredNorm() > kPredictionSigmas * kPredictionSigmas * prediction_variance))
+    return PredictionChoice::Scans;
+  const Eigen::Vector3d u = apart.normalized();
+  const double first_off = std::abs(u.dot(S * wrapped(first - prediction)));
+  const double searched_off = std::abs(u.dot(S * wrapped(searched - prediction)));
+  return first_off <= searched_off ? PredictionChoice::First : PredictionChoice::Searched;
+}
+
 SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScorePyramid& pyramid,
                              const sensor::Scan& cur, const CPose2D& guess, const plicp::MatchResult& first,
-                             const CorrelativeParams& p, const plicp::PlicpParams& plicp, double cost_per_m2)
+                             const CorrelativeParams& p, const plicp::PlicpParams& plicp, double cost_per_m2,
+                             double prediction_variance)
 {
   SearchedMatch out;
   out.match = first;
@@ -150,6 +192,24 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
   if (first.ok() && second.ok())
     out.compared = compareMatches(grid, points, w, vec(first.pose), vec(second.pose), p.common_points_fraction,
                                   p.surface_goes_on_ratio);
+  // Where the scans cannot tell the two apart, neither can their objectives: the prediction
+  // chooses.
+  if (first.ok() && second.ok())
+  {
+    const PredictionChoice who = predictionChoice(vec(first.pose), vec(second.pose), vec(guess), second.covariance,
+                                                  sensor::rotationLength(cur.points), p.prediction_decides_share,
+                                                  prediction_variance);
+    if (who != PredictionChoice::Scans)
+    {
+      out.prediction_decided = true;
+      if (who == PredictionChoice::Searched)
+      {
+        out.match = second;
+        out.replaced = true;
+      }
+      return out;
+    }
+  }
   if (second.ok() && out.compared.searched >= out.compared.first + p.min_score_gain)
   {
     out.match = second;

@@ -10,6 +10,7 @@
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <limits>
 #include <vector>
 
 namespace swslam::correlative
@@ -76,7 +77,38 @@ struct SearchedMatch
   bool bounded_refinement = false;  ///< PLICP from the search's pose was run again within refine_correspondence_dist
   int searched_iterations = 0;      ///< PLICP iterations run from the search's pose, kept or not
   MatchComparison compared;  ///< what the choice compared (the objectives above when a match failed)
+  bool prediction_decided = false;  ///< the scans could not tell the two apart: the prediction chose (predictionChoice)
 };
+
+/** The share of a match's information along a pose difference, against its strongest
+ * direction's: u' I u / lambda_max(I), u the unit difference and I the inverse of the
+ * covariance, both over (x, y, length * theta) (a turn counted as the arc it moves points at
+ * `length` by: sensor::rotationLength). In [0, 1]. 1 (fully informed) for a zero or
+ * non-finite difference, a covariance that is not positive definite, or a length that is not
+ * positive. */
+double informationShare(const Eigen::Matrix3d& covariance, const Eigen::Vector3d& difference, double length);
+
+/** Who chooses between a first and a searched match. */
+enum class PredictionChoice
+{
+  Scans,     ///< the searched match is informed along the difference, or the prediction is too
+             ///< uncertain to tell the two apart: the objectives choose
+  First,     ///< the scans cannot tell the two apart, and the first lies nearer the prediction
+  Searched,  ///< ... and the searched one does
+};
+
+/** Where the scans cannot tell two matches apart, the prediction chooses: when the searched
+ * match's informationShare along their difference is under `share`, and the two lie more
+ * than kPredictionSigmas standard deviations of the prediction apart (`prediction_variance`
+ * [m^2], its recent errors: a prediction no better than the difference between them tells
+ * nothing either), the one nearer the prediction along that difference (the first on a tie;
+ * over (x, y, length * theta), theta differences wrapped). A pair of scans along a corridor
+ * fixes neither match along it, and a search's grid scores a pose that pulls the scan back
+ * into what the keyframes saw higher (doc/tracking.md, "Ambiguous matches"). */
+PredictionChoice predictionChoice(const Eigen::Vector3d& first, const Eigen::Vector3d& searched,
+                                  const Eigen::Vector3d& prediction, const Eigen::Matrix3d& searched_covariance,
+                                  double length, double share, double prediction_variance);
+constexpr double kPredictionSigmas = 3;
 
 /** Two poses' objectives (score on the grid less the window's motion prior) as the choice
  * between a first and a searched match compares them: on the points that can tell them apart
@@ -97,7 +129,10 @@ MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::V
  * it. If the match from the best pose ends at a lower objective than the best pose's own
  * (PLICP against the keyframe alone left the search's basin), PLICP runs again from the best
  * pose with refine_correspondence_dist as its correspondence radius, and the higher-scoring
- * of the two is the searched match.
+ * of the two is the searched match. Where the searched match has almost no information
+ * along its difference from the first (predictionChoice, prediction_decides_share), the
+ * prediction (of variance `prediction_variance` [m^2]; infinite: unknown) chooses instead of
+ * the objectives.
  * Nothing found, or a best
  * pose in the first match's basin (within 1.5 cells and 1.5 angle steps), keeps `first`
  * without a second match. `cost_per_m2` adds a quadratic translation cost to the window's
@@ -107,7 +142,8 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference,
                              const ScorePyramid& pyramid, const sensor::Scan& cur,
                              const mrpt::poses::CPose2D& guess, const plicp::MatchResult& first,
                              const CorrelativeParams& p, const plicp::PlicpParams& plicp,
-                             double cost_per_m2 = 0);
+                             double cost_per_m2 = 0,
+                             double prediction_variance = std::numeric_limits<double>::infinity());
 
 /** What tracking keeps after searchAndMatch() (LocalTracker::matchLast; the matcher bench
  * asks the same). */

@@ -1,9 +1,12 @@
 // Re-alignment of a tracking match by the correlative search (tracking/searched_match.h).
 #include <swslam/correlative/searched_match.h>
 
+#include <Eigen/LU>
+#include <Eigen/QR>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "test_support.h"
@@ -261,5 +264,144 @@ TEST(SearchedMatch, PointsInUnseenSpaceDoNotChooseBetweenTwoMatches)
     EXPECT_EQ(few.common_points, 0u);
     EXPECT_EQ(few.searched, all.searched);
     EXPECT_EQ(few.first, all.first);
+  }
+}
+
+namespace
+{
+/** informationShare the slow way: the information matrix inverted explicitly, its largest
+ * eigenvalue by power iteration. */
+double informationShareByPowerIteration(const Eigen::Matrix3d& cov, const Eigen::Vector3d& d, double length)
+{
+  const Eigen::DiagonalMatrix<double, 3> S(1, 1, length);
+  const Eigen::Matrix3d scaled = S * cov * S;
+  const Eigen::Matrix3d info = scaled.inverse();
+  Eigen::Vector3d v(1, 0.7, 0.3);
+  for (int i = 0; i < 2000; i++) v = (info * v).normalized();
+  const double largest = v.dot(info * v);
+  const Eigen::Vector3d u = (S * d).normalized();
+  return u.dot(info * u) / largest;
+}
+}  // namespace
+
+TEST(SearchedMatch, InformationShareAgreesWithPowerIteration)
+{
+  std::mt19937 rng(11);
+  std::normal_distribution<double> N(0, 1);
+  std::uniform_real_distribution<double> U(0.5, 20);
+  for (int trial = 0; trial < 200; trial++)
+  {
+    Eigen::Matrix3d A;
+    for (int i = 0; i < 9; i++) A(i / 3, i % 3) = N(rng);
+    // Variances spread over six decades, as a corridor's match has them.
+    const Eigen::Vector3d spread(std::pow(10.0, -3 + 3 * U(rng) / 20), std::pow(10.0, -6 + 6 * U(rng) / 20), 1e-4);
+    const Eigen::Matrix3d Q = Eigen::HouseholderQR<Eigen::Matrix3d>(A).householderQ();
+    const Eigen::Matrix3d cov = Q * spread.asDiagonal() * Q.transpose();
+    const Eigen::Vector3d d(N(rng), N(rng), 0.1 * N(rng));
+    const double length = U(rng);
+    const double share = informationShare(cov, d, length);
+    EXPECT_GE(share, 0);
+    EXPECT_LE(share, 1);
+    EXPECT_NEAR(share, informationShareByPowerIteration(cov, d, length), 1e-6 * std::max(share, 1e-3))
+        << "trial " << trial;
+  }
+  // Along the strongest direction the share is 1, along a pure eigendirection its ratio.
+  const Eigen::Matrix3d corridor = Eigen::Vector3d(4.0, 1e-4, 1e-6).asDiagonal();
+  EXPECT_NEAR(informationShare(corridor, Eigen::Vector3d(0, 0, 1), 1.0), 1.0, 1e-12);
+  EXPECT_NEAR(informationShare(corridor, Eigen::Vector3d(1, 0, 0), 1.0), 1e-6 / 4.0, 1e-15);
+  EXPECT_NEAR(informationShare(corridor, Eigen::Vector3d(0, 1, 0), 1.0), 1e-2, 1e-12);
+  // The length scales a turn: heading variance 1e-6 rad^2 at 10 m is 1e-4 m^2, as y's.
+  EXPECT_NEAR(informationShare(corridor, Eigen::Vector3d(0, 1, 0), 10.0), 1.0, 1e-12);
+}
+
+TEST(SearchedMatch, InformationShareIsOneWhereNothingCanBeSaid)
+{
+  const Eigen::Matrix3d cov = Eigen::Vector3d(4.0, 1e-4, 1e-6).asDiagonal();
+  const Eigen::Vector3d along(1, 0, 0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(informationShare(cov, Eigen::Vector3d::Zero(), 1.0), 1.0) << "no difference";
+  EXPECT_EQ(informationShare(cov, Eigen::Vector3d(nan, 0, 0), 1.0), 1.0);
+  EXPECT_EQ(informationShare(cov, along, 0.0), 1.0) << "no length";
+  EXPECT_EQ(informationShare(cov, along, nan), 1.0);
+  EXPECT_EQ(informationShare(Eigen::Matrix3d::Zero(), along, 1.0), 1.0) << "no covariance";
+  EXPECT_EQ(informationShare(Eigen::Vector3d(4.0, -1e-4, 1e-6).asDiagonal(), along, 1.0), 1.0) << "not positive";
+  Eigen::Matrix3d bad = cov;
+  bad(0, 1) = bad(1, 0) = nan;
+  EXPECT_EQ(informationShare(bad, along, 1.0), 1.0) << "not finite";
+}
+
+TEST(SearchedMatch, ThePredictionChoosesWhereTheScansCannot)
+{
+  // A match along a corridor (x): 2 m of standard deviation along it, a centimetre across,
+  // a milliradian in heading.
+  const Eigen::Matrix3d cov = Eigen::Vector3d(4.0, 1e-4, 1e-6).asDiagonal();
+  const Eigen::Vector3d prediction(1.0, 0.0, 0.0), at(1.02, 0.01, 0.001), short_by_1m(0.0, 0.01, 0.001);
+  const double share = 1e-3, length = 5;
+  const double known = 0.05 * 0.05;  // the prediction's recent errors: 5 cm
+  EXPECT_EQ(predictionChoice(at, short_by_1m, prediction, cov, length, share, known), PredictionChoice::First);
+  EXPECT_EQ(predictionChoice(short_by_1m, at, prediction, cov, length, share, known), PredictionChoice::Searched);
+  EXPECT_EQ(predictionChoice(at, short_by_1m, prediction, cov, length, 0, known), PredictionChoice::Scans) << "off";
+  // A prediction no better than the two matches are apart tells nothing either: 1 m apart,
+  // with errors of 0.34 m it cannot tell them (3 sigma), with 0.33 m it can.
+  EXPECT_EQ(predictionChoice(at, short_by_1m, prediction, cov, length, share, 0.34 * 0.34), PredictionChoice::Scans);
+  EXPECT_EQ(predictionChoice(at, short_by_1m, prediction, cov, length, share, 0.33 * 0.33), PredictionChoice::First);
+  const double unknown = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(predictionChoice(at, short_by_1m, prediction, cov, length, share, unknown), PredictionChoice::Scans);
+  // Across the corridor the match is informed: the objectives choose.
+  const Eigen::Vector3d aside(1.02, 0.5, 0.001);
+  EXPECT_EQ(predictionChoice(at, aside, prediction, cov, length, share, known), PredictionChoice::Scans);
+  // Equally far from the prediction: the first stays.
+  const Eigen::Vector3d ahead(1.5, 0.01, 0.001), behind(0.5, 0.01, 0.001);
+  EXPECT_EQ(predictionChoice(ahead, behind, prediction, cov, length, share, known), PredictionChoice::First);
+  // Headings are compared wrapped: a searched match across +-pi from the first, along a weak
+  // heading, is a small difference, not a full turn.
+  const Eigen::Matrix3d weak_heading = Eigen::Vector3d(1e-4, 1e-4, 1.0).asDiagonal();
+  const Eigen::Vector3d near_pi(0, 0, M_PI - 0.01), across(0, 0, -M_PI + 0.02), pred_pi(0, 0, M_PI);
+  EXPECT_EQ(predictionChoice(near_pi, across, pred_pi, weak_heading, 1.0, share, 1e-6), PredictionChoice::First);
+  EXPECT_EQ(predictionChoice(across, near_pi, pred_pi, weak_heading, 1.0, share, 1e-6), PredictionChoice::Searched);
+}
+
+TEST(SearchedMatch, AlongACorridorThePredictionKeepsItsMatch)
+{
+  // The corridor of PointsInUnseenSpaceDoNotChooseBetweenTwoMatches, compared on all points:
+  // there the grid scores a pose 1 m short, which pulls the scan back into what the keyframe
+  // saw, above the right one. PLICP from the prediction (right) stays on it; the searched
+  // match lies short of it along the corridor, where neither pair of scans fixes the motion.
+  const auto world = test::corridorWorld();
+  correlative::CorrelativeParams p;
+  p.max_range = 6;
+  p.common_points_fraction = 0;
+  const plicp::PlicpParams plicp;
+  const CPose2D truth(-1, 0.15, 0.04);
+  for (unsigned seed = 1; seed <= 5; seed++)
+  {
+    std::mt19937 rng(seed);
+    auto scan = [&](const CPose2D& pose) {
+      return sensor::scanFromObservation(test::simulateObservation(world, pose, 361, M_PI, 30, 0.01, rng));
+    };
+    const plicp::ReferenceScan ref(scan(CPose2D()), plicp);
+    const sensor::Scan cur = scan(truth);
+    const ScorePyramid pyramid = searchPyramid(scanRays(ref.scan, p.max_range), p);
+    const plicp::MatchResult first = plicp::matchScans(ref, cur, truth, plicp);
+    ASSERT_TRUE(first.ok());
+    ASSERT_NEAR(first.pose.x(), truth.x(), 0.2) << "seed " << seed;  // nothing fixes x but noise
+
+    correlative::CorrelativeParams objectives = p;
+    objectives.prediction_decides_share = 0;
+    const auto scored = searchAndMatch(ref, pyramid, cur, truth, first, objectives, plicp);
+    ASSERT_TRUE(scored.replaced) << "seed " << seed;
+    EXPECT_GT(std::abs(scored.match.pose.x() - truth.x()), 0.5) << "seed " << seed;
+    EXPECT_FALSE(scored.prediction_decided);
+
+    // A prediction of unknown accuracy (as at a run's start) cannot choose either.
+    const auto unknown = searchAndMatch(ref, pyramid, cur, truth, first, p, plicp);
+    EXPECT_FALSE(unknown.prediction_decided);
+    EXPECT_EQ(unknown.match.pose, scored.match.pose);
+
+    const double recent_errors = 0.1 * 0.1;
+    const auto decided = searchAndMatch(ref, pyramid, cur, truth, first, p, plicp, 0, recent_errors);
+    EXPECT_TRUE(decided.prediction_decided) << "seed " << seed;
+    EXPECT_FALSE(decided.replaced);
+    EXPECT_EQ(decided.match.pose, first.pose);
   }
 }

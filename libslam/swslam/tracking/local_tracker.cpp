@@ -92,9 +92,14 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
         correlative::searchPyramid(submapRays(), correlative_));
     search_pyramid_keyframe_ = last.id;
   }
-  correlative::SearchedMatch s = correlative::searchAndMatch(*last.scan, *search_pyramid_, scan, guess, m, correlative_,
-                                                             plicp_, steady_.costPerM2(correlative_));
+  // Where the two matches differ along a direction the scans cannot decide, the prediction
+  // chooses between them, if its recent errors are small enough to tell them apart.
+  const double lost_var = tracking_.lost_prior_sigma_xy * tracking_.lost_prior_sigma_xy;
+  correlative::SearchedMatch s = correlative::searchAndMatch(
+      *last.scan, *search_pyramid_, scan, guess, m, correlative_, plicp_, steady_.costPerM2(correlative_),
+      steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var));
   step.searched = true;
+  step.prediction_chose = s.prediction_decided;
   if (search_first && !s.replaced) s.match = m = matchReference(scan, guess);
   // A first match that stayed on its prediction lost only overlap: an object close in front
   // of the sensor hides the surroundings, and the search may put that object on a wall of the
@@ -324,8 +329,8 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
                          geometry::sensorMotion(last.sensor_pose, predicted),
                          steady_.predictionVariance(plicp_.range_sigma * plicp_.range_sigma, lost_var),
                          sensor::rotationLength(scan.points));
-  step.ambiguous = weak.weak + (step.two_peaks ? 1 : 0);
-  step.prior_decided = weak.prior_decided;
+  step.ambiguous = weak.weak + (step.two_peaks ? 1 : 0) + (step.prediction_chose ? 1 : 0);
+  step.prior_decided = weak.prior_decided + (step.prediction_chose ? 1 : 0);
   // A match that is one of two poses the scan cannot tell apart: its variance along their
   // separation is the separation's square (after the weak directions: the prediction never
   // averages two peaks).

@@ -66,11 +66,15 @@ struct TrackingStep
   size_t valid_rays = 0;           ///< valid rays of this scan
   bool two_peaks = false;  ///< the search found a second pose, far from the kept one, of similar score...
   Eigen::Vector3d peak_offset = Eigen::Vector3d::Zero();  ///< ...this far from it (sensor frame [x, y, theta])
+  /** the first and the searched match differed where the scans cannot tell them apart, and
+   * the prediction chose (correlative::predictionChoice) */
+  bool prediction_chose = false;
   /** Directions the scan could not decide: the kept match's weak ones, plus one for a second
-   * peak of the search (0: none) */
+   * peak of the search, plus one for a choice the prediction made (0: none) */
   int ambiguous = 0;
-  /** Of the weak ones, those along which the prediction decided the pose: the unobservable
-   * ones (no ray faces them), or all of them with ambiguity_take_prior (0: none) */
+  /** Of those, the ones along which the prediction decided the pose: the unobservable weak
+   * ones (no ray faces them), or all weak ones with ambiguity_take_prior; and its choice
+   * between two matches (0: none) */
   int prior_decided = 0;
 };
 

@@ -395,12 +395,13 @@ struct WeakRun
  * and 2 m (181 beams over 180°, 8 m, 1 cm noise): the posts show the motion until the sensor
  * passes them at scan 20, and nothing tells it after that but the prediction, exact here at
  * constant velocity. Scan `blind` has no valid ray. */
-WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind)
+WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind,
+                    const correlative::CorrelativeParams& cp = correlative::CorrelativeParams())
 {
   world.circles.push_back({1.0, 0.7, 0.1});
   world.circles.push_back({2.0, -0.7, 0.1});
   std::mt19937 rng(21);
-  LocalTracker tracker(tp, plicp::PlicpParams());
+  LocalTracker tracker(tp, plicp::PlicpParams(), cp);
   WeakRun r;
   double x_error_20 = 0, x_error_previous = 0;
   for (int k = 0; k < 60; k++)
@@ -449,16 +450,19 @@ TEST(LocalTracker, AlongACorridorThePredictionDecidesAndTheEdgesSaySo)
   EXPECT_LT(unobservable.worst_x_jump, 0.05);
   EXPECT_LT(unobservable.worst_x_drift, 1.0);
   EXPECT_GE(unobservable.min_edge_x_variance, 0.02);
-  // Weak directions only reported: the searches slide the scans along the axis by decimetres
-  // at a time, and the noise's faked information makes confident edges along it.
+  // Weak directions only reported (and no choice between two matches left to the
+  // prediction): the searches slide the scans along the axis by decimetres at a time, and the
+  // noise's faked information makes confident edges along it.
   tp.unobservable_min_rays = 0;
-  const WeakRun reported = driveAlongX(test::corridorWorld(), tp, 35);
+  correlative::CorrelativeParams scans_choose;
+  scans_choose.prediction_decides_share = 0;
+  const WeakRun reported = driveAlongX(test::corridorWorld(), tp, 35, scans_choose);
   EXPECT_GE(reported.ambiguous_scans, 35);
   EXPECT_EQ(reported.prior_decided_scans, 0);
   EXPECT_GT(reported.worst_x_jump, 0.3);
   EXPECT_LT(reported.min_edge_x_variance, 0.002);
   tp.ambiguity_factor = 0;
-  const WeakRun off = driveAlongX(test::corridorWorld(), tp, 35);
+  const WeakRun off = driveAlongX(test::corridorWorld(), tp, 35, scans_choose);
   EXPECT_LT(off.min_edge_x_variance, 0.002);
 }
 
@@ -486,9 +490,12 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   EXPECT_LT(reported.worst_x_jump, 0.05) << "no jump along the wall";
   EXPECT_LT(reported.worst_x_drift, 1.5);
   EXPECT_LT(reported.worst_y_error, 0.05);
-  // Without the unobservable rule the searches slide the scans along the wall by metres.
+  // Without the unobservable rule (nor the prediction's choice between two matches) the
+  // searches slide the scans along the wall by metres.
   tp.unobservable_min_rays = 0;
-  const WeakRun slid = driveAlongX(wall, tp, -1);
+  correlative::CorrelativeParams scans_choose;
+  scans_choose.prediction_decides_share = 0;
+  const WeakRun slid = driveAlongX(wall, tp, -1, scans_choose);
   EXPECT_EQ(slid.prior_decided_scans, 0) << "weak directions only reported";
   EXPECT_GT(slid.worst_x_jump, 0.3);
   EXPECT_GT(slid.worst_x_drift, 3.0);
