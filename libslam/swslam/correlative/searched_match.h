@@ -97,6 +97,10 @@ enum class PredictionChoice
   Searched,  ///< ... and the searched one does
 };
 
+/** How far apart, in standard deviations of the prediction's recent errors, two matches must
+ * lie for the prediction to tell them apart (predictionChoice). */
+constexpr double kPredictionSigmas = 3;
+
 /** Where the scans cannot tell two matches apart, the prediction chooses: when the searched
  * match's informationShare along their difference is under `share`, and the two lie more
  * than kPredictionSigmas standard deviations of the prediction apart (`prediction_variance`
@@ -104,11 +108,12 @@ enum class PredictionChoice
  * nothing either), the one nearer the prediction along that difference (the first on a tie;
  * over (x, y, length * theta), theta differences wrapped). A pair of scans along a corridor
  * fixes neither match along it, and a search's grid scores a pose that pulls the scan back
- * into what the keyframes saw higher (doc/tracking.md, "Ambiguous matches"). */
+ * into what the keyframes saw higher (doc/tracking.md, "The prediction chooses where the scans
+ * cannot"). The share is measured as tracking measures weak directions (tracking/ambiguity.h),
+ * which lies a layer above this module. */
 PredictionChoice predictionChoice(const Eigen::Vector3d& first, const Eigen::Vector3d& searched,
                                   const Eigen::Vector3d& prediction, const Eigen::Matrix3d& searched_covariance,
                                   double length, double share, double prediction_variance);
-constexpr double kPredictionSigmas = 3;
 
 /** Two poses' objectives (score on the grid less the window's motion prior) as the choice
  * between a first and a searched match compares them: on the points that can tell them apart
