@@ -10,13 +10,15 @@
 # starts while moving, without a motion to predict from.
 # Usage: scripts/bench-carmen.sh [CARMEN_DIR] [OUT_DIR]   (defaults ../shared/datasets,
 # out/bench-carmen); swslam's outputs go to OUT_DIR/<log>/, OUT_DIR/<log>-reversed/ and
-# OUT_DIR/<log>-from-<scan>/.
+# OUT_DIR/<log>-from-<scan>/. SWSLAM_BUILD=DIR runs another build's programs, with the
+# config/default.ini of that build's source tree (scripts/compare-builds.sh does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 carmen_dir=${1:-../shared/datasets}
 out=${2:-out/bench-carmen}
-bin=build/apps
-cfg=config/default.ini
+build=${SWSLAM_BUILD:-build}
+bin=$build/apps
+cfg=$(sed -n 's/^swslam_SOURCE_DIR:STATIC=//p' "$build/CMakeCache.txt")/config/default.ini
 mkdir -p "$out"
 field() { grep -F "| $1" "$2" | head -1 | awk -F'|' '{print $3}' | sed 's/^ *//; s/ *$//'; }
 # One log: convert (laser only, for the reference poses), run, print its row.

@@ -176,7 +176,6 @@ SearchedMatch searchAndMatch(const plicp::ReferenceScan& reference, const ScoreP
   if (p.refine_correspondence_dist > 0 && out.searched_objective < best->objective)
   {
     plicp::PlicpParams bounded = plicp;
-    bounded.initial_correspondence_dist = p.refine_correspondence_dist;
     bounded.max_correspondence_dist = std::min(plicp.max_correspondence_dist, p.refine_correspondence_dist);
     const plicp::MatchResult local = plicp::matchScans(reference, cur, search_pose, bounded);
     out.searched_iterations += local.iterations;

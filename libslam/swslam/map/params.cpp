@@ -16,7 +16,6 @@ void MapParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const
   MRPT_LOAD_CONFIG_VAR_CS(prob_occupied, double);
   MRPT_LOAD_CONFIG_VAR_CS(prob_free, double);
   MRPT_LOAD_CONFIG_VAR_CS(max_insertion_range, double);
-  MRPT_LOAD_CONFIG_VAR_CS(no_return_as_free, bool);
   horizontal_tolerance = mrpt::DEG2RAD(
       c.read_double(s, "horizontal_tolerance_DEG", mrpt::RAD2DEG(horizontal_tolerance)));
   reinsert.translation = c.read_double(s, "reinsert_translation", reinsert.translation);
@@ -55,7 +54,6 @@ void MapParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::st
   MRPT_SAVE_CONFIG_VAR_COMMENT(prob_occupied, "eq. 16 prop_occupied: the cell at a ray's end");
   MRPT_SAVE_CONFIG_VAR_COMMENT(prob_free, "eq. 16 prop_free: the cells a ray crosses");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_insertion_range, "[m] rays are cut here");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(no_return_as_free, "Rays without a return clear space");
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("horizontal_tolerance_DEG", horizontal_tolerance,
                                        "[deg] a scan tilted more is an error");
   c.write(s, "reinsert_translation", reinsert.translation);
@@ -72,8 +70,7 @@ mrpt::maps::COccupancyGridMap2D::TInsertionOptions MapParams::insertionOptions()
   o.maxOccupancyUpdateCertainty = static_cast<float>(prob_occupied);
   // MRPT's cells hold the log-odds of being free: its "freeness certainty" is 1 - prop_free.
   o.maxFreenessUpdateCertainty = static_cast<float>(1 - prob_free);
-  o.maxFreenessInvalidRanges = static_cast<float>(1 - prob_free);
-  o.considerInvalidRangesAsFreeSpace = no_return_as_free;
+  o.considerInvalidRangesAsFreeSpace = false;  // a ray without a return tells nothing
   o.decimation = 1;
   o.horizontalTolerance = static_cast<float>(horizontal_tolerance);
   o.wideningBeamsWithDistance = false;  // plain Bresenham-like rays, as the paper

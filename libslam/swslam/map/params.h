@@ -20,7 +20,6 @@ struct MapParams : public mrpt::config::CLoadableOptions
   double prob_occupied = 0.65;     ///< eq. (16) prop_occupied, for the cell at a ray's end
   double prob_free = 0.35;         ///< eq. (16) prop_free, for the cells a ray crosses
   double max_insertion_range = 80; ///< [m] rays are cut here (no hit inserted beyond)
-  bool no_return_as_free = false;  ///< rays without a return clear space (MRPT's rule)
   double horizontal_tolerance = mrpt::DEG2RAD(0.05);  ///< [rad] (ini: _DEG) a tilted scan is an error
   geometry::MoveThreshold reinsert;          ///< (ini: reinsert_translation, reinsert_rotation_DEG)
   double occupied_thresh = 0.65;   ///< exports: occupancy above this is an obstacle

@@ -70,16 +70,11 @@ ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& o
                                 " cells of " + std::to_string(res) +
                                 " m): a corrupt pose (bad odometry or sensor pose?)");
 
-  // Farthest point MRPT may touch: valid rays are cut at max_range, and rays without a
-  // return (when they clear space) reach at most max_range too.
+  // Farthest point MRPT may touch: valid rays are cut at max_range (rays without a return
+  // insert nothing).
   double reach = 0;
   for (size_t i = 0; i < obs.getScanSize(); i++)
-  {
-    if (obs.getScanRangeValidity(i))
-      reach = std::max(reach, std::min<double>(max_range, obs.getScanRange(i)));
-    else if (params.no_return_as_free)
-      reach = max_range;
-  }
+    if (obs.getScanRangeValidity(i)) reach = std::max(reach, std::min<double>(max_range, obs.getScanRange(i)));
   const int half = static_cast<int>(std::ceil(reach / res)) + kScratchMarginCells;
   const int cx = cellOf(sensor.x(), res), cy = cellOf(sensor.y(), res);
   const CellBox box{cx - half, cy - half, cx + half + 1, cy + half + 1};

@@ -23,18 +23,6 @@ void keepNearestPerReference(std::vector<Correspondence>& cs, int ref_size)
   cs.resize(w);
 }
 
-void keepNearPerReference(std::vector<Correspondence>& cs, int ref_size, double ratio)
-{
-  thread_local std::vector<double> nearest;  // squared distance of each j1's nearest match
-  nearest.assign(ref_size, std::numeric_limits<double>::infinity());
-  for (const auto& c : cs) nearest[c.j1] = std::min(nearest[c.j1], c.dist2);
-  const double r2 = ratio * ratio;
-  size_t w = 0;
-  for (const auto& c : cs)
-    if (c.dist2 <= r2 * nearest[c.j1]) cs[w++] = c;
-  cs.resize(w);
-}
-
 void trimByError(std::vector<Correspondence>& cs, std::vector<double>& errors,
                  double keep_fraction, double adaptive_quantile, double adaptive_mult)
 {

@@ -13,11 +13,6 @@ namespace swslam::plicp
  * allocation. */
 void keepNearestPerReference(std::vector<Correspondence>& cs, int ref_size);
 
-/** csm's tolerant rule for doubles: keeps in `cs` the matches whose distance to their j1 is at
- * most `ratio` times that of the nearest match of the same j1 (ratio >= 1; every match of a j1
- * matched once is kept). Order preserved; no allocation. */
-void keepNearPerReference(std::vector<Correspondence>& cs, int ref_size, double ratio);
-
 /** Keeps the correspondences whose error is at most min(the keep_fraction quantile,
  * adaptive_mult x the adaptive_quantile quantile) of `errors`. `cs` and `errors` (aligned)
  * keep only the survivors, in order. */

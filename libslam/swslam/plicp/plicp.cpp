@@ -2,7 +2,6 @@
 
 #include <swslam/plicp/closed_form.h>
 #include <swslam/plicp/covariance.h>
-#include <swslam/plicp/decimation.h>
 #include <swslam/plicp/outliers.h>
 #include <swslam/plicp/run.h>
 
@@ -67,16 +66,7 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
                     std::to_string(cur.size()) + " (need " + std::to_string(min_n) + ")");
 
   const Eigen::Vector3d x0(initial_guess.x(), initial_guess.y(), initial_guess.phi());
-  // Iterate on every k-th ray (dense sensors), then one step with all of them.
-  const size_t stride = decimationStride(cur, params.point_spacing);
-  const sensor::Scan sub = stride > 1 ? decimated(cur, stride) : sensor::Scan();
-  const bool thin = sub.size() >= min_n;
-  IcpRun run = runWithRetries(reference, thin ? sub : cur, x0, params);
-  const bool run_ok =
-      run.status == MatchStatus::Converged || run.status == MatchStatus::MaxIterations;
-  const bool full = !thin || (run_ok && fullResolutionStep(reference, cur, params, run));
-  const sensor::Scan& used = full ? cur : sub;  // the scan run.kept indexes
-  res.cur_valid_rays = used.size();     // so that correspondences / cur_valid_rays stays a fraction
+  const IcpRun run = iterate(reference, cur, x0, params);
   res.iterations = run.iterations;
   res.status = run.status;
   if (!res.ok()) return fail(res, run.status, run.message);
@@ -88,7 +78,7 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
     return fail(res, MatchStatus::Diverged, "result moved beyond max_correction from the guess");
 
   // Residuals and covariance (eq. 4-10) at the final estimate.
-  const auto cur_in_ref = transformed(used, x);
+  const auto cur_in_ref = transformed(cur, x);
   const auto errors = lineErrors(reference, cur_in_ref, kept);
   res.correspondences = kept.size();
   res.sum_sq_residuals = 0;
@@ -102,7 +92,7 @@ MatchResult matchScans(const ReferenceScan& reference, const sensor::Scan& cur,
   for (const auto& k : kept)
   {
     auto dir = [](const sensor::Scan& s, int j) { return Eigen::Vector2d(s.points[j] / s.ranges[j]); };
-    cov_terms.push_back({dir(used, k.i), dir(ref, k.j1), dir(ref, k.j2), used.ranges[k.i],
+    cov_terms.push_back({dir(cur, k.i), dir(ref, k.j1), dir(ref, k.j2), cur.ranges[k.i],
                          ref.ranges[k.j1], ref.ranges[k.j2], k.i, k.j1, k.j2});
   }
   res.covariance = plicpCovariance(cov_terms, x, params.range_sigma);

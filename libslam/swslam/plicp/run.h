@@ -1,6 +1,6 @@
 #pragma once
 // The iterations of PLICP (paper sec. II.A): correspondences, outlier rejection, closed-form
-// step, convergence; the coarse start and the rotated retries for poor guesses.
+// step, convergence.
 
 #include <swslam/plicp/plicp.h>
 
@@ -36,17 +36,10 @@ std::vector<double> lineErrors(const ReferenceScan& reference,
 void lineErrorsInto(const ReferenceScan& reference, const std::vector<Eigen::Vector2d>& cur_in_ref,
                     const std::vector<Correspondence>& cs, std::vector<double>& out);
 
-/** PLICP from the guess x0 (coarse start if the guess is poor); if it ends with few inliers,
- * also from the guess turned by +-1..retry_rotations steps, keeping a retry only if it has
- * retry_min_gain times the inliers of the first run. Iterations are summed over runs. */
-IcpRun runWithRetries(const ReferenceScan& reference, const sensor::Scan& cur, const Eigen::Vector3d& x0,
-                      const PlicpParams& params);
-
-/** One more iteration with every ray of `cur` (the run having converged on a decimated
- * copy): correspondences at max_correspondence_dist, outlier rejection, closed-form step.
- * On success run.x and run.kept (then indices into `cur`) are updated and it returns true;
- * with too few correspondences or a failed solve it returns false and leaves `run` as is. */
-bool fullResolutionStep(const ReferenceScan& reference, const sensor::Scan& cur,
-                        const PlicpParams& params, IcpRun& run);
+/** PLICP iterations from the guess x0 until the correspondence set or the step settles
+ * (Converged) or max_iterations; fails with TooFewCorrespondences or Diverged (run.message
+ * says why). */
+IcpRun iterate(const ReferenceScan& reference, const sensor::Scan& cur, const Eigen::Vector3d& x0,
+               const PlicpParams& params);
 
 }  // namespace swslam::plicp

@@ -63,7 +63,6 @@ TEST(Config, DefaultFileValuesEqualTheInClassDefaults)
   const auto loaded = loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   const plicp::PlicpParams d;
   EXPECT_DOUBLE_EQ(loaded.plicp.max_correspondence_dist, d.max_correspondence_dist);
-  EXPECT_DOUBLE_EQ(loaded.plicp.initial_correspondence_dist, d.initial_correspondence_dist);
   EXPECT_DOUBLE_EQ(loaded.plicp.min_segment_length, d.min_segment_length);
   EXPECT_NEAR(loaded.plicp.epsilon_theta, d.epsilon_theta, 1e-6);
   EXPECT_NEAR(loaded.plicp.max_correction_theta, d.max_correction_theta, 1e-9);
@@ -129,7 +128,7 @@ TEST(Config, AMapTooLargeToAllocateIsAnErrorNotACrash)
 TEST(Config, ValuesThatWouldStallOrOverflowAreErrorsNamingTheKey)
 {
   // Found by a sanitizer campaign: each passed the loader, then made a cast undefined (a huge
-  // kernel, an infinite cell or angle step, a huge decimation stride) or a run stall (PLICP
+  // kernel, an infinite cell or angle step, or a run stall (PLICP
   // running to a huge iteration cap on every scan).
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"[correlative]\nsigma = 1e12\n", "sigma"},
@@ -137,7 +136,6 @@ TEST(Config, ValuesThatWouldStallOrOverflowAreErrorsNamingTheKey)
       {"[correlative]\nresolution = inf\n", "resolution"},
       {"[correlative]\ntheta_step_DEG = inf\n", "theta_step_DEG"},
       {"[correlative]\nwindow_theta_DEG = 1e300\n", "window_theta_DEG"},
-      {"[plicp]\npoint_spacing_DEG = 1e300\n", "point_spacing_DEG"},
       {"[plicp]\nmax_iterations = 1000000\n", "max_iterations"},
       {"[carmen]\nmax_range = 1e300\n", "max_range"}};
   for (const auto& [text, key] : cases)
@@ -188,7 +186,7 @@ TEST(Config, AValueNotOfItsKeysKindIsAnErrorNotASilentZero)
 {
   // MRPT reads numbers with atoi/atof and booleans with atoi: each of these loaded silently.
   const std::vector<std::pair<std::string, std::string>> bad = {
-      {"plicp", "coarse_start_fraction = abc"},  // a number read as 0
+      {"plicp", "trim_keep_fraction = abc"},  // a number read as 0
       {"plicp", "min_segment_length = 0.3 0.4"},  // read as 0.3
       {"plicp", "max_iterations = 12abc"},      // read as 12
       {"plicp", "remove_doubles = 0x10"},        // a boolean read as false

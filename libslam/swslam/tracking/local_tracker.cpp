@@ -129,44 +129,16 @@ plicp::MatchResult LocalTracker::matchLast(const sensor::Scan& scan, const CPose
   return s.match;
 }
 
-std::vector<MapScan> LocalTracker::localMap(const CPose2D& sensor_pose) const
-{
-  std::vector<MapScan> map;
-  const size_t n = static_cast<size_t>(tracking_.local_map_keyframes);
-  for (size_t k = keyframes_.size() > n ? keyframes_.size() - n : 0; k < keyframes_.size(); k++)
-  {
-    const Keyframe& kf = keyframes_[k];
-    const CPose2D at = kf.pose + kf.sensor_pose;
-    if (k + 1 == keyframes_.size() || (at.translation() - sensor_pose.translation()).norm() <= tracking_.local_map_radius)
-      map.push_back({at, &kf.scan->scan});
-  }
-  return map;
-}
-
 plicp::MatchResult LocalTracker::matchReference(const sensor::Scan& scan, const CPose2D& guess) const
 {
-  const Keyframe& last = keyframes_.back();
-  if (tracking_.local_map_keyframes == 0) return plicp::matchScans(*last.scan, scan, guess, plicp_);
-  // The local map seen from the guess; PLICP then starts at the virtual sensor itself.
-  const CPose2D seen_from = (last.pose + last.sensor_pose) + guess;
-  const plicp::ReferenceScan ref(virtualScan(localMap(seen_from), seen_from, scan, tracking_.min_range), plicp_);
-  return inReferenceFrame(plicp::matchScans(ref, scan, CPose2D(), plicp_), guess);
+  return plicp::matchScans(*keyframes_.back().scan, scan, guess, plicp_);
 }
 
 graph::Constraint LocalTracker::consecutiveEdge(const Keyframe& previous, const Keyframe& node,
-                                                const sensor::Scan& scan, const plicp::MatchResult& match) const
+                                                const plicp::MatchResult& match) const
 {
   if (!match.ok()) return priorEdge(previous, node);
-  plicp::MatchResult m = match;
-  if (tracking_.local_map_keyframes > 0)
-  {
-    // The pair of keyframes, from where the local map placed the node; a pair that fails or
-    // leaves the local map's basin keeps the local map's match.
-    const plicp::MatchResult pair = plicp::matchScans(*previous.scan, scan, match.pose, plicp_);
-    if (pair.ok() && (pair.pose.translation() - match.pose.translation()).norm() <= tracking_.dense_gate_xy &&
-        std::abs(std::remainder(pair.pose.phi() - match.pose.phi(), 2 * M_PI)) <= tracking_.dense_gate_theta)
-      m = pair;
-  }
+  const plicp::MatchResult& m = match;
   graph::Constraint e{previous.id, node.id, geometry::vehicleMotion(previous.sensor_pose, m.pose),
                       Eigen::Matrix3d::Identity(), graph::EdgeKind::Consecutive};
   e.information = geometry::informationFromCovariance(
@@ -223,21 +195,18 @@ LocalTracker::WeakDirections LocalTracker::takePriorWhereWeak(plicp::MatchResult
   // match's two weaker directions are candidates whatever their information says: a wall's
   // line can look informed by the noise of one scan (about one in ten on a simulated wall).
   Ambiguity taken = a;
-  if (!tracking_.ambiguity_take_prior)
+  taken.weak = 0;
+  const Ambiguity candidates = findWeakDirections(m.covariance, length, 1.0);
+  // Only a match whose weakest direction has less than kFacingCheckRatio times the weak
+  // threshold's information is tested: the scan's normals and the counts for every match
+  // cost 0.04-0.06 ms per scan on the valley (doc/tracking.md).
+  if (tracking_.unobservable_min_rays > 0 && candidates.ratio < kFacingCheckRatio * threshold)
   {
-    taken.weak = 0;
-    const Ambiguity candidates = findWeakDirections(m.covariance, length, 1.0);
-    // Only a match whose weakest direction has less than kFacingCheckRatio times the weak
-    // threshold's information is tested: the scan's normals and the counts for every match
-    // cost 0.04-0.06 ms per scan on the valley (doc/tracking.md).
-    if (tracking_.unobservable_min_rays > 0 && candidates.ratio < kFacingCheckRatio * threshold)
-    {
-      FacingNormals own;
-      if (!cur_facing) own = facingNormals(cur.points, plicp_.min_segment_length);
-      taken = unobservableDirections(candidates, {ref.scan.points, ref_facing, 0.0},
-                                     {cur.points, cur_facing ? *cur_facing : own, m.pose.phi()}, length,
-                                     tracking_.unobservable_min_rays);
-    }
+    FacingNormals own;
+    if (!cur_facing) own = facingNormals(cur.points, plicp_.min_segment_length);
+    taken = unobservableDirections(candidates, {ref.scan.points, ref_facing, 0.0},
+                                   {cur.points, cur_facing ? *cur_facing : own, m.pose.phi()}, length,
+                                   tracking_.unobservable_min_rays);
   }
   if (taken.weak == 0) return {a.weak, 0};
   const double sth = tracking_.lost_prior_sigma_theta;
@@ -359,7 +328,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   const size_t prev_id = keyframes_.back().id;
   Keyframe& node = addKeyframe(scan, step.pose);
   const Keyframe& previous = keyframes_[prev_id];
-  step.edges.push_back(consecutiveEdge(previous, node, scan, step.match));
+  step.edges.push_back(consecutiveEdge(previous, node, step.match));
   // Only recent nodes: older ones within reach are loop candidates, verified by the graph.
   std::vector<std::pair<double, size_t>> near;
   const size_t gap = static_cast<size_t>(tracking_.dense_max_index_gap);

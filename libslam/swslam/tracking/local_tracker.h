@@ -1,7 +1,6 @@
 #pragma once
 // Local tracking (paper sec. II.C, Fig. 1-2): each scan is matched by PLICP against the
-// latest keyframe, or a virtual scan of the last keyframes (local_map.h), starting from the
-// previous relative pose moved by the expected motion.
+// latest keyframe, starting from the previous relative pose moved by the expected motion.
 // Past a translation or rotation threshold a new keyframe (graph node) is made; it is
 // connected to the previous node and, densely, to every node within a radius.
 
@@ -9,7 +8,6 @@
 #include <swslam/correlative/score_grid.h>
 #include <swslam/graph/constraint.h>
 #include <swslam/plicp/plicp.h>
-#include <swslam/tracking/local_map.h>
 #include <swslam/tracking/ambiguity.h>
 #include <swslam/tracking/params.h>
 #include <swslam/tracking/steady_motion.h>
@@ -73,8 +71,7 @@ struct TrackingStep
    * peak of the search, plus one for a choice the prediction made (0: none) */
   int ambiguous = 0;
   /** Of those, the ones along which the prediction decided the pose: the unobservable weak
-   * ones (no ray faces them), or all weak ones with ambiguity_take_prior; and its choice
-   * between two matches (0: none) */
+   * ones (no ray faces them), and its choice between two matches (0: none) */
   int prior_decided = 0;
 };
 
@@ -110,8 +107,8 @@ class LocalTracker
   /** The weak directions of a converged match of `cur` against `ref`, given with their
    * FacingNormals (`cur_facing` nullptr: computed here if needed; tracking/ambiguity.h):
    * takes `prior` (sensor frame; translation variance prior_var_xy, rotation variance
-   * lost_prior_sigma_theta^2) along those of them that are unobservable, or along all of them
-   * with ambiguity_take_prior, and says how many there were of each. */
+   * lost_prior_sigma_theta^2) along those of them that are unobservable, and says how many
+   * there were of each. */
   WeakDirections takePriorWhereWeak(plicp::MatchResult& m, const plicp::ReferenceScan& ref,
                                     const FacingNormals& ref_facing, const sensor::Scan& cur,
                                     const FacingNormals* cur_facing, const mrpt::poses::CPose2D& prior,
@@ -128,15 +125,11 @@ class LocalTracker
   plicp::MatchResult matchLast(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess, bool measured_prediction,
                                TrackingStep& step);
   /** The match of `scan` from `guess`, both in the last keyframe's sensor frame, against the
-   * reference tracking uses: the local map's virtual scan seen from the guess
-   * (local_map_keyframes > 0), or the last keyframe's scan. */
+   * last keyframe's scan. */
   plicp::MatchResult matchReference(const sensor::Scan& scan, const mrpt::poses::CPose2D& guess) const;
-  /** The last local_map_keyframes keyframes whose sensor lies within local_map_radius of
-   * `sensor_pose` (world frame), and the last keyframe always. */
-  std::vector<MapScan> localMap(const mrpt::poses::CPose2D& sensor_pose) const;
   /** The consecutive edge of a new node from `match` (of its scan, in `previous`'s sensor
-   * frame): with a local map, PLICP of the pair of keyframes from it. */
-  graph::Constraint consecutiveEdge(const Keyframe& previous, const Keyframe& node, const sensor::Scan& scan,
+   * frame). */
+  graph::Constraint consecutiveEdge(const Keyframe& previous, const Keyframe& node,
                                     const plicp::MatchResult& match) const;
   /** Rays of the last submap_keyframes keyframes in the last keyframe's sensor frame. */
   std::vector<correlative::Ray> submapRays() const;

@@ -25,10 +25,7 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
       c.read_double(s, "lost_prior_sigma_theta_DEG", mrpt::RAD2DEG(lost_prior_sigma_theta)));
   MRPT_LOAD_CONFIG_VAR_CS(constant_velocity, bool);
   MRPT_LOAD_CONFIG_VAR_CS(max_interval_ratio, double);
-  MRPT_LOAD_CONFIG_VAR_CS(local_map_keyframes, int);
-  MRPT_LOAD_CONFIG_VAR_CS(local_map_radius, double);
   MRPT_LOAD_CONFIG_VAR_CS(ambiguity_factor, double);
-  MRPT_LOAD_CONFIG_VAR_CS(ambiguity_take_prior, bool);
   MRPT_LOAD_CONFIG_VAR_CS(unobservable_min_rays, int);
   MRPT_LOAD_CONFIG_VAR_CS(searched_min_inlier_fraction, double);
   MRPT_LOAD_CONFIG_VAR_CS(overlap_search_min_inlier_fraction, double);
@@ -46,8 +43,6 @@ void TrackingParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
   require(dense_gate_xy > 0 && dense_gate_theta > 0, "dense_gate_xy and dense_gate_theta_DEG must be > 0");
   require(lost_prior_sigma_xy > 0 && lost_prior_sigma_theta > 0, "lost_prior_sigma_* must be > 0");
   require(max_interval_ratio >= 1, "max_interval_ratio must be >= 1");
-  require(local_map_keyframes >= 0, "local_map_keyframes must be >= 0");
-  require(local_map_radius > 0, "local_map_radius must be > 0");
   require(ambiguity_factor >= 0 && std::isfinite(ambiguity_factor), "ambiguity_factor must be >= 0");
   require(unobservable_min_rays >= 0, "unobservable_min_rays must be >= 0");
   require(searched_min_inlier_fraction >= 0 && searched_min_inlier_fraction <= 1,
@@ -71,10 +66,7 @@ void TrackingParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const st
   MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("lost_prior_sigma_theta_DEG", lost_prior_sigma_theta, "[deg] same for rotation");
   MRPT_SAVE_CONFIG_VAR_COMMENT(constant_velocity, "predict the previous motion over the new scan interval (false: per scan)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(max_interval_ratio, "...scaled by at most this (or 1 / this) times");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_keyframes, "scans match a virtual scan of the last this many keyframes (0: the last keyframe's scan)...");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(local_map_radius, "[m] ...those whose sensor is this close to the predicted one");
   MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_factor, "a match direction with less information than this many times what noise fakes is weak (0: never)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(ambiguity_take_prior, "along a weak direction the prediction decides (false: only reported)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(unobservable_min_rays, "a match direction fewer rays of either scan face is unobservable: the prediction decides (0: never)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(searched_min_inlier_fraction, "a match chosen after the search counts only with this fraction of the valid rays as inliers (0: any)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(overlap_search_min_inlier_fraction, "a match the search found replaces one that stayed on its prediction (searched for its little overlap) only with this fraction of the valid rays as inliers");

@@ -21,17 +21,12 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
   double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
   bool constant_velocity = true;   ///< predict the previous motion over the new scan interval (false: per scan)
   double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
-  int local_map_keyframes = 0;      ///< scans match a virtual scan of the last this many keyframes (0: the last keyframe's scan)...
-  double local_map_radius = 10.0;   ///< [m] ...those whose sensor is this close to the predicted one
   /** A match direction is weak (ambiguous) when its information is below this many times what
    * noise fakes along a featureless one (0: never; tracking/ambiguity.h) */
   double ambiguity_factor = 1.0;
-  /** Along a weak direction the prediction decides, with the variance of its recent errors
-   * (false: weak directions are only reported; doc/tracking.md says why that is the default) */
-  bool ambiguity_take_prior = false;
   /** A direction of a match that fewer than this many rays of the keyframe or of the scan
-   * face (a single wall's line) is unobservable: the prediction decides along it even with
-   * ambiguity_take_prior off (0: never; tracking/ambiguity.h) */
+   * face (a single wall's line) is unobservable: the prediction decides along it, with the
+   * variance of its recent errors (0: never; tracking/ambiguity.h) */
   int unobservable_min_rays = 3;
   /** A match chosen after the correlative search (the prediction failed) counts only if at
    * least this fraction of the scan's valid rays are its inliers; else the scan is unmatched
