@@ -30,7 +30,14 @@ int main(int argc, char** argv)
     if (resolution.isSet())
     {
       params.map.resolution = resolution.getValue();
-      params.map.check("--resolution " + std::to_string(resolution.getValue()));
+      try
+      {
+        swslam::map::MapParams::table().check(params.map);
+      }
+      catch (const std::invalid_argument& e)
+      {
+        throw std::invalid_argument("--resolution " + std::to_string(resolution.getValue()) + ": " + e.what());
+      }
     }
     swslam::system::RunResults run_data;
     swslam::graph::GraphLoadReport load;

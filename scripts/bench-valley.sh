@@ -160,8 +160,8 @@ laps=$out/laps
 mkdir -p "$laps"
 awk '/^waypoints *=/ { w = $0; sub(/^waypoints *= */, "", w); print "waypoints = " w ", " w ", " w ", " w; next } { print }' \
   datasets/scenarios/valley.ini > "$laps/valley-laps.ini"
-sed -e 's/^full_optimization_loop_xy *=.*/full_optimization_loop_xy = 0/' \
-    -e 's/^full_optimization_loop_theta_DEG *=.*/full_optimization_loop_theta_DEG = 0/' "$cfg" > "$laps/every-loop.ini"
+awk '{print} /^\[graph_optimizer\]/{print "full_optimization_loop_xy = 0"; print "full_optimization_loop_theta_DEG = 0"}' \
+  "$cfg" > "$laps/every-loop.ini"
 "$bin/swslam-sim" -q --scenario "$laps/valley-laps.ini" --output "$laps/data" > /dev/null
 for run in default every-loop; do
   c=$cfg; [[ $run == every-loop ]] && c=$laps/every-loop.ini

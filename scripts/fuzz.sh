@@ -57,9 +57,9 @@ cmake --build $build -j "${FUZZ_JOBS:-$(nproc)}" --target "${harnesses[@]/#/fuzz
 out=$build/fuzz-out
 mkdir -p $out
 {
-  echo "# sections and keys of config/default.ini (written by scripts/fuzz.sh)"
-  grep -o '^\[[A-Za-z0-9_]*\]' config/default.ini | sed 's/.*/"&"/'
-  sed -n 's/^\([A-Za-z0-9_]*\) *=.*/"\1 = "/p' config/default.ini
+  echo "# sections and keys of config/default.ini and config/expert.ini (written by scripts/fuzz.sh)"
+  grep -ho '^\[[A-Za-z0-9_]*\]' config/default.ini config/expert.ini | sort -u | sed 's/.*/"&"/'
+  sed -n 's/^\([A-Za-z0-9_]*\) *=.*/"\1 = "/p' config/default.ini config/expert.ini
   printf '"%s"\n' true false yes no inf -inf nan 1e19 -1 '\x0a' '#' ';'
 } > $out/ini_config.dict
 

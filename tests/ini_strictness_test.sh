@@ -12,8 +12,8 @@ log=$src/datasets/lake-short/lake-short.rawlog
 gt=$src/datasets/lake-short/lake-short.gt.tum
 
 # Three broken copies of the default config, each with its expected message.
-sed 's/^max_iterations *=.*/max_iterations 40/' "$src/config/default.ini" > "$work/stray.ini"
-awk '{print} /^\[plicp\]/{print "max_iterations = 12"}' "$src/config/default.ini" > "$work/repeated.ini"
+sed 's/^range_sigma *=.*/range_sigma 0.03/' "$src/config/default.ini" > "$work/stray.ini"
+awk '{print} /^\[plicp\]/{print "range_sigma = 0.05"}' "$src/config/default.ini" > "$work/repeated.ini"
 awk '{print} /^\[plicp\]/{print "max_iteratoins = 12"}' "$src/config/default.ini" > "$work/unknown.ini"
 declare -A expect=([stray]="is neither '\[section\]' nor 'key = value'" [repeated]="is set again"
                    [unknown]="max_iteratoins")

@@ -50,7 +50,7 @@ MapBenchmarkFigures benchmarkMapBuilder(const io::ScansWithTruth& data, size_t n
     f.update_max_ms = std::max(f.update_max_ms, ms);
   }
   f.update_avg_ms /= f.nodes;
-  f.reinsert_all_ms = timeMs([&] { builder.reinsertMoved(truth, builder.params().reinsert); });
+  f.reinsert_all_ms = timeMs([&] { builder.reinsertMoved(truth, builder.params().reinsertThreshold()); });
   f.snapshot_ms = timeMs([&] {
     const auto g = builder.snapshot();
     f.grid_cells = size_t(g.getSizeX()) * g.getSizeY();

@@ -149,17 +149,4 @@ void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& 
   });
 }
 
-void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,
-                        const std::vector<std::string>& allowed)
-{
-  std::vector<std::string> sections;
-  cfg.getAllSections(sections);
-  for (const auto& s : sections)
-  {
-    if (std::find(allowed.begin(), allowed.end(), s) == allowed.end())
-      throw std::invalid_argument("config: unknown section [" + s + "]; known sections: " +
-                                  joined(allowed));
-  }
-}
-
 }  // namespace swslam::common

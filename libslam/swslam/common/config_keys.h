@@ -1,7 +1,8 @@
 #pragma once
-// Strict loading of parameter structs from .ini files: a key that the struct does
-// not know, or a value that is not of its key's kind, is an error naming the key, never a
-// silent default.
+// Strict loading of the simulator's scenario sections (sim/scenario.h), whose structs are
+// MRPT CLoadableOptions: a key that the struct does not know, or a value that is not of its
+// key's kind, is an error naming the key, never a silent default. (The modules' parameters
+// are declared in tables: common/param_table.h.)
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
@@ -25,10 +26,6 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
  * keys whose loaded value `saveToConfigFile()` writes as a plain integer. */
 void checkReadBack(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                    const mrpt::config::CLoadableOptions& loaded);
-
-/** Throws std::invalid_argument if `cfg` has a section not in `allowed`. */
-void checkKnownSections(const mrpt::config::CConfigFileBase& cfg,
-                        const std::vector<std::string>& allowed);
 
 /** checkKnownKeys(), params.loadFromConfigFile(), then checkReadBack(). */
 template <class Params>

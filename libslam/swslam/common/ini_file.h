@@ -3,7 +3,7 @@
 // line must be blank, a comment, '[section]' or 'key = value', each key set once, before
 // MRPT parses it (MRPT's reader skips a stray line, and keeps one of two settings, silently).
 // What the sections hold is checked by each parameter struct's strict loading
-// (config_keys.h).
+// (param_table.h).
 
 #include <mrpt/config/CConfigFileMemory.h>
 

@@ -1,97 +1,60 @@
 #include <swslam/correlative/params.h>
 
-#include <mrpt/config/CConfigFileBase.h>
-#include <mrpt/core/bits_math.h>
-
-#include <cmath>
-#include <stdexcept>
-
 namespace swslam::correlative
 {
-void CorrelativeParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+const common::ParamTable<CorrelativeParams>& CorrelativeParams::table()
 {
-  MRPT_LOAD_CONFIG_VAR_CS(enabled, bool);
-  MRPT_LOAD_CONFIG_VAR_CS(trigger_correction_xy, double);
-  trigger_correction_theta = mrpt::DEG2RAD(
-      c.read_double(s, "trigger_correction_theta_DEG", mrpt::RAD2DEG(trigger_correction_theta)));
-  MRPT_LOAD_CONFIG_VAR_CS(trigger_inlier_fraction, double);
-  MRPT_LOAD_CONFIG_VAR_CS(trust_prediction_after, int);
-  MRPT_LOAD_CONFIG_VAR_CS(submap_keyframes, int);
-  MRPT_LOAD_CONFIG_VAR_CS(resolution, double);
-  MRPT_LOAD_CONFIG_VAR_CS(sigma, double);
-  MRPT_LOAD_CONFIG_VAR_CS(free_space_score, double);
-  MRPT_LOAD_CONFIG_VAR_CS(window_xy, double);
-  window_theta = mrpt::DEG2RAD(c.read_double(s, "window_theta_DEG", mrpt::RAD2DEG(window_theta)));
-  theta_step = mrpt::DEG2RAD(c.read_double(s, "theta_step_DEG", mrpt::RAD2DEG(theta_step)));
-  MRPT_LOAD_CONFIG_VAR_CS(cost_per_m, double);
-  MRPT_LOAD_CONFIG_VAR_CS(cost_per_rad, double);
-  MRPT_LOAD_CONFIG_VAR_CS(max_range, double);
-  MRPT_LOAD_CONFIG_VAR_CS(min_score, double);
-  MRPT_LOAD_CONFIG_VAR_CS(min_score_gain, double);
-  MRPT_LOAD_CONFIG_VAR_CS(common_points_fraction, double);
-  MRPT_LOAD_CONFIG_VAR_CS(surface_goes_on_ratio, double);
-  MRPT_LOAD_CONFIG_VAR_CS(refine_correspondence_dist, double);
-  MRPT_LOAD_CONFIG_VAR_CS(prediction_decides_share, double);
-  MRPT_LOAD_CONFIG_VAR_CS(steady_prior_cost, double);
-  MRPT_LOAD_CONFIG_VAR_CS(steady_sigma_min, double);
-  MRPT_LOAD_CONFIG_VAR_CS(steady_min_step, double);
-  auto require = [&](bool ok, const char* what) {
-    if (!ok) throw std::invalid_argument(std::string("config [") + s + "]: " + what);
-  };
-  require(trigger_correction_xy >= 0 && trigger_correction_theta >= 0,
-          "trigger_correction_xy and trigger_correction_theta_DEG must be >= 0");
-  require(trigger_inlier_fraction >= 0 && trigger_inlier_fraction <= 1,
-          "trigger_inlier_fraction must be in [0, 1]");
-  require(trust_prediction_after >= 0, "trust_prediction_after must be >= 0");
-  require(submap_keyframes >= 1, "submap_keyframes must be >= 1");
-  require(resolution > 0 && resolution <= 10 && sigma > 0, "resolution must be in (0, 10] m, sigma > 0");
-  // Each point's kernel covers (2 ceil(3 sigma / resolution) + 1)^2 cells of the score grid.
-  require(sigma <= 10 * resolution, "sigma must be at most 10 resolution");
-  require(free_space_score >= -1 && free_space_score <= 0, "free_space_score must be in [-1, 0]");
-  // Bounds that keep the pyramid (padded by the window) and the rotated lattices in memory.
-  require(window_xy >= 0 && window_xy <= 256 * resolution,
-          "window_xy must be in [0, 256 resolution]");
-  require(window_theta >= 0 && window_theta <= 2 * M_PI, "window_theta_DEG must be in [0, 360]");
-  require(theta_step >= mrpt::DEG2RAD(0.1) && theta_step <= 2 * M_PI, "theta_step_DEG must be in [0.1, 360]");
-  require(cost_per_m >= 0 && cost_per_rad >= 0, "cost_per_m and cost_per_rad must be >= 0");
-  require(max_range > 0, "max_range must be > 0");
-  require(min_score >= 0 && min_score <= 1, "min_score must be in [0, 1]");
-  require(min_score_gain >= 0, "min_score_gain must be >= 0");
-  require(common_points_fraction >= 0 && common_points_fraction <= 1, "common_points_fraction must be in [0, 1]");
-  require(surface_goes_on_ratio >= 0, "surface_goes_on_ratio must be >= 0");
-  require(refine_correspondence_dist >= 0, "refine_correspondence_dist must be >= 0");
-  require(prediction_decides_share >= 0 && prediction_decides_share <= 1, "prediction_decides_share must be in [0, 1]");
-  require(steady_prior_cost >= 0, "steady_prior_cost must be >= 0");
-  require(steady_sigma_min > 0, "steady_sigma_min must be > 0");
-  require(steady_min_step >= 0, "steady_min_step must be >= 0");
-}
-
-void CorrelativeParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
-{
-  MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "search when tracking's prediction or a loop check's match failed");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(trigger_correction_xy, "[m] search if the match moved the prediction more than this...");
-  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("trigger_correction_theta_DEG", trigger_correction_theta, "[deg] ...or turned it more than this...");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(trigger_inlier_fraction, "...or ended with fewer inliers than this fraction");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(trust_prediction_after, "...unless it kept a prediction confirmed this many scans in a row (0: never)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(submap_keyframes, "the score grid holds the last this many keyframes' points");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(resolution, "[m] score grid cell and translation step");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(sigma, "[m] score kernel sigma");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(free_space_score, "score of a point where the keyframes saw free space, in [-1, 0]");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(window_xy, "[m] translations searched around the prediction");
-  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("window_theta_DEG", window_theta, "[deg] rotations searched");
-  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("theta_step_DEG", theta_step, "[deg] rotation step");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(cost_per_m, "motion prior: score lost per metre from the prediction");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(cost_per_rad, "...and per radian");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_range, "[m] farther points are not used");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_score, "least score of a search result");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_score_gain, "the searched match wins only with this much higher objective");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(common_points_fraction, "compare the two matches on the points that can tell them apart, when at least this fraction can (0: on all)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(surface_goes_on_ratio, "a point unseen at one pose tells nothing when at the other it lies on a surface going on (the cell beyond scores this fraction of its own)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(refine_correspondence_dist, "[m] PLICP radius of the second refinement when the first scored below the search's pose (0: none)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(prediction_decides_share, "the prediction chooses between the two matches where the searched one has under this share of its strongest information along their difference (0: never)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(steady_prior_cost, "steady-motion prior: score lost at one sigma from the prediction (0: none)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(steady_sigma_min, "[m] least sigma: the spread of the recent steps");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(steady_min_step, "[m] the prior applies while the last 3 steps average at least this");
+  using P = CorrelativeParams;
+  using common::Tier;
+  using common::atLeast, common::between, common::above;
+  static const auto t =
+      common::ParamTable<P>("correlative",
+                            "Correlative search by branch and bound: tracking's when its prediction failed, a loop check's "
+                            "when its match failed.")
+          .real("window_xy", &P::window_xy, "m", atLeast(0), "translations searched: +- this around the prediction",
+                Tier::User)
+          .angle("window_theta_DEG", &P::window_theta, between(0, 360),
+                 "rotations searched: +- this around the prediction (180: the whole circle)", Tier::User)
+          .real("max_range", &P::max_range, "m", above(0), "farther points are left out of the grid and the search",
+                Tier::User)
+          .flag("enabled", &P::enabled, "search at all (tracking and loop checks)")
+          .real("trigger_correction_xy", &P::trigger_correction_xy, "m", atLeast(0),
+                "search if the match moved the prediction more than this...")
+          .angle("trigger_correction_theta_DEG", &P::trigger_correction_theta, atLeast(0), "...or turned it more than this...")
+          .real("trigger_inlier_fraction", &P::trigger_inlier_fraction, "", between(0, 1),
+                "...or ended with fewer than this fraction of the points within 3 range_sigma of the keyframe")
+          .integer("trust_prediction_after", &P::trust_prediction_after, "", atLeast(0),
+                   "...unless it stayed on a prediction the last this many scans confirmed (0: always search)")
+          .integer("submap_keyframes", &P::submap_keyframes, "", atLeast(1),
+                   "the score grid holds the points of the last this many keyframes")
+          .real("resolution", &P::resolution, "m", common::aboveUpTo(0, 10), "score grid cell, and translation step")
+          .real("sigma", &P::sigma, "m", above(0), "score of a point: exp(-d^2 / 2 sigma^2), d to the nearest keyframe point")
+          .real("free_space_score", &P::free_space_score, "", between(-1, 0),
+                "score of a point in space the keyframes' rays crossed")
+          .angle("theta_step_DEG", &P::theta_step, between(0.1, 360), "rotation step of the search")
+          .real("cost_per_m", &P::cost_per_m, "", atLeast(0), "motion prior: score lost per metre from the prediction...")
+          .real("cost_per_rad", &P::cost_per_rad, "", atLeast(0), "...and per radian")
+          .real("min_score", &P::min_score, "", between(0, 1), "a search result scores at least this (mean score of the points)")
+          .real("min_score_gain", &P::min_score_gain, "", atLeast(0),
+                "the searched match replaces the first only with an objective this much higher")
+          .real("common_points_fraction", &P::common_points_fraction, "", between(0, 1),
+                "compare the two matches on the points that can tell them apart when this fraction can (0: on all)")
+          .real("surface_goes_on_ratio", &P::surface_goes_on_ratio, "", atLeast(0),
+                "a point unseen at one pose tells nothing if at the other it lies on a surface going on past it")
+          .real("refine_correspondence_dist", &P::refine_correspondence_dist, "m", atLeast(0),
+                "PLICP radius of a second refinement when the first left the search's basin (0: none)")
+          .real("prediction_decides_share", &P::prediction_decides_share, "", between(0, 1),
+                "the prediction chooses between two matches where the searched one has under this share of information (0: never)")
+          .real("steady_prior_cost", &P::steady_prior_cost, "", atLeast(0),
+                "steady-motion prior: score lost at one sigma from the prediction (0: none)")
+          .real("steady_sigma_min", &P::steady_sigma_min, "m", above(0), "least sigma of the steady-motion prior")
+          .real("steady_min_step", &P::steady_min_step, "m", atLeast(0),
+                "the steady-motion prior applies while the last 3 steps average at least this")
+          // Each point's kernel covers (2 ceil(3 sigma / resolution) + 1)^2 cells of the score grid.
+          .rule([](const P& p) { return p.sigma <= 10 * p.resolution; }, "sigma must be at most 10 resolution")
+          // The pyramid (padded by the window) and the rotated lattices stay in memory.
+          .rule([](const P& p) { return p.window_xy <= 256 * p.resolution; }, "window_xy must be at most 256 resolution");
+  return t;
 }
 
 }  // namespace swslam::correlative

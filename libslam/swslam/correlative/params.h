@@ -2,18 +2,19 @@
 // Parameters of the correlative search that re-aligns a tracking match whose prediction
 // failed, section [correlative] (doc/tracking.md).
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
 
-#include <cmath>
+#include <mrpt/core/bits_math.h>
 
 namespace swslam::correlative
 {
-struct CorrelativeParams : public mrpt::config::CLoadableOptions
+/** Section [correlative]: declared in table() (params.cpp). */
+struct CorrelativeParams
 {
   bool enabled = true;  ///< false: neither tracking nor loop checks ever search
   // When a scan is searched: its match against the keyframe ...
   double trigger_correction_xy = 0.1;  ///< [m] ... moved the prediction more than this,
-  double trigger_correction_theta = 2.0 * M_PI / 180;  ///< [rad] or turned it more (ini: _DEG),
+  double trigger_correction_theta = mrpt::DEG2RAD(2.0);  ///< [rad] or turned it more,
   double trigger_inlier_fraction = 0.5;  ///< or ended with fewer inliers than this (or failed)
   int trust_prediction_after = 10;  ///< ...unless it kept a prediction confirmed this many scans in a row (0: never)
   // The search.
@@ -22,8 +23,8 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   double sigma = 0.1;       ///< [m] score kernel: exp(-d^2 / 2 sigma^2)
   double free_space_score = -1.0;  ///< in [-1, 0]: score of a point where the keyframes saw free space
   double window_xy = 3.0;   ///< [m] translations within +- this of the prediction
-  double window_theta = M_PI;  ///< [rad] rotations within +- this (ini: window_theta_DEG)
-  double theta_step = 1.0 * M_PI / 180;  ///< [rad] rotation step (ini: theta_step_DEG)
+  double window_theta = mrpt::DEG2RAD(180.0);  ///< [rad] rotations within +- this
+  double theta_step = mrpt::DEG2RAD(1.0);  ///< [rad] rotation step
   double cost_per_m = 0.02;    ///< motion prior: objective = score - cost_per_m |t - t_pred| ...
   double cost_per_rad = 0.1;  ///< ... - cost_per_rad |theta - theta_pred|
   double max_range = 30.0;  ///< [m] farther points are left out of the grid and the search
@@ -52,8 +53,7 @@ struct CorrelativeParams : public mrpt::config::CLoadableOptions
   double steady_sigma_min = 0.3;     ///< [m]
   double steady_min_step = 0.5;      ///< [m] per scan
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<CorrelativeParams>& table();
 };
 
 }  // namespace swslam::correlative

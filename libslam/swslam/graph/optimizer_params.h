@@ -4,7 +4,9 @@
 #include <swslam/graph/edge_kind.h>
 #include <swslam/graph/robust_kernel.h>
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
+
+#include <mrpt/core/bits_math.h>
 
 #include <cmath>
 #include <cstddef>
@@ -33,7 +35,8 @@ const char* kernelScheduleName(KernelSchedule s);
 /** "fixed", "gnc" or "adaptive"; nothing for another name. */
 std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name);
 
-struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
+/** Section [graph_optimizer]: declared in table() (optimizer_params.cpp). */
+struct GraphOptimizerParams
 {
   // Barron kernel (paper eq. 14) on r = sqrt(e^T Omega e), so c is in standard deviations.
   double kernel_alpha = 0.0;  ///< [-inf, 2]: 2 L2, 0 Cauchy, -2 Geman-McClure, -inf Welsch
@@ -72,7 +75,7 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
    * [m] or full_optimization_loop_theta [rad] asks for a full optimization; the window takes
    * the others (0 and 0: every loop, the paper's rule). */
   double full_optimization_loop_xy = 0.05;
-  double full_optimization_loop_theta = 0.5 * M_PI / 180;
+  double full_optimization_loop_theta = mrpt::DEG2RAD(0.5);
 
   size_t max_iterations = 100;        ///< LM iterations (paper: 100)
   double lm_initial_lambda = 1e-4;    ///< damping relative to diag(H) at the first iteration
@@ -87,8 +90,7 @@ struct GraphOptimizerParams : public mrpt::config::CLoadableOptions
   /** Throws std::invalid_argument naming the first out-of-range parameter. */
   void check() const;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<GraphOptimizerParams>& table();
 };
 
 }  // namespace swslam::graph

@@ -1,5 +1,5 @@
 // Levenberg-Marquardt + IRLS on small pose-graph problems, and its parameters.
-#include <swslam/common/config_keys.h>
+#include <swslam/common/param_table.h>
 #include <swslam/graph/optimizer.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -139,7 +139,7 @@ TEST(GraphOptimizer, RejectsMalformedProblems)
 TEST(GraphOptimizerParams, DefaultIniLoadsStrictlyAndRoundTrips)
 {
   mrpt::config::CConfigFile ini(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
-  const auto p = swslam::common::loadStrict<swslam::graph::GraphOptimizerParams>(ini, "graph_optimizer");
+  const auto p = swslam::graph::GraphOptimizerParams::table().load(ini);
   // The file documents the in-class defaults.
   const swslam::graph::GraphOptimizerParams d;
   EXPECT_EQ(p.kernel_alpha, d.kernel_alpha);
@@ -165,8 +165,8 @@ TEST(GraphOptimizerParams, DefaultIniLoadsStrictlyAndRoundTrips)
   q.kernel_alpha = swslam::graph::kAlphaWelsch;
   q.window_size = 12;
   q.full_optimization_interval = 7;
-  q.saveToConfigFile(mem, "graph_optimizer");
-  const auto r = swslam::common::loadStrict<swslam::graph::GraphOptimizerParams>(mem, "graph_optimizer");
+  swslam::graph::GraphOptimizerParams::table().save(q, mem);
+  const auto r = swslam::graph::GraphOptimizerParams::table().load(mem);
   EXPECT_TRUE(std::isinf(r.kernel_alpha) && r.kernel_alpha < 0);
   EXPECT_EQ(r.window_size, 12u);
   EXPECT_EQ(r.full_optimization_interval, 7u);
@@ -176,18 +176,18 @@ TEST(GraphOptimizerParams, RejectsUnknownKeysAndBadValues)
 {
   mrpt::config::CConfigFileMemory mem;
   mem.write("graph_optimizer", "kernel_alfa", 1.0);
-  EXPECT_THROW(swslam::common::loadStrict<swslam::graph::GraphOptimizerParams>(mem, "graph_optimizer"),
+  EXPECT_THROW(swslam::graph::GraphOptimizerParams::table().load(mem),
                std::invalid_argument);
   mrpt::config::CConfigFileMemory bad;
   bad.write("graph_optimizer", "kernel_alpha", 3.0);
-  EXPECT_THROW(swslam::common::loadStrict<swslam::graph::GraphOptimizerParams>(bad, "graph_optimizer"),
+  EXPECT_THROW(swslam::graph::GraphOptimizerParams::table().load(bad),
                std::invalid_argument);
   swslam::graph::GraphOptimizerParams p;
   p.window_size = 0;
   EXPECT_THROW(p.check(), std::invalid_argument);
   mrpt::config::CConfigFileMemory zero;
   zero.write("graph_optimizer", "full_optimization_interval", 0);
-  EXPECT_THROW(swslam::common::loadStrict<swslam::graph::GraphOptimizerParams>(zero, "graph_optimizer"),
+  EXPECT_THROW(swslam::graph::GraphOptimizerParams::table().load(zero),
                std::invalid_argument);
   for (const auto& [key, value] : {std::pair<const char*, double>{"full_optimization_loop_xy", -0.1},
                                    {"full_optimization_loop_theta_DEG", -1.0},
@@ -195,7 +195,7 @@ TEST(GraphOptimizerParams, RejectsUnknownKeysAndBadValues)
   {
     mrpt::config::CConfigFileMemory loop;
     loop.write("graph_optimizer", key, value);
-    EXPECT_THROW(swslam::common::loadStrict<swslam::graph::GraphOptimizerParams>(loop, "graph_optimizer"),
+    EXPECT_THROW(swslam::graph::GraphOptimizerParams::table().load(loop),
                  std::invalid_argument)
         << key << " = " << value;
   }

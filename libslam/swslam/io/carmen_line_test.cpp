@@ -1,6 +1,6 @@
 // Parsing of single CARMEN lines, and the saturation and timestamp rules.
 #include <swslam/io/carmen_line.h>
-#include <swslam/common/config_keys.h>
+#include <swslam/common/param_table.h>
 #include <swslam/io/carmen_log.h>
 #include <swslam/io/carmen_rules.h>
 
@@ -231,12 +231,12 @@ TEST(CarmenParams, LoadStrictlyAndCheckRanges)
   mrpt::config::CConfigFileMemory cfg;
   cfg.write("carmen", "max_range", 40.0);
   cfg.write("carmen", "repair_timestamps", true);
-  const auto p = swslam::common::loadStrict<swslam::io::CarmenParams>(cfg, "carmen");
+  const auto p = swslam::io::CarmenParams::table().load(cfg);
   EXPECT_DOUBLE_EQ(p.max_range, 40.0);
   EXPECT_TRUE(p.repair_timestamps);
   EXPECT_NO_THROW(p.check());
   cfg.write("carmen", "max_rnage", 1.0);
-  EXPECT_THROW(swslam::common::loadStrict<swslam::io::CarmenParams>(cfg, "carmen"), std::invalid_argument);
+  EXPECT_THROW(swslam::io::CarmenParams::table().load(cfg), std::invalid_argument);
   swslam::io::CarmenParams bad;
   bad.default_period = 0;
   try

@@ -1,15 +1,14 @@
 #pragma once
 // How CARMEN logs are read, section [carmen] (doc/carmen.md).
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
 
 #include <cstdint>
-#include <string>
 
 namespace swslam::io
 {
-/** Converter options, .ini section [carmen]. */
-struct CarmenParams : public mrpt::config::CLoadableOptions
+/** How CARMEN logs are read, .ini section [carmen]: declared in table() (carmen_params.cpp). */
+struct CarmenParams
 {
   /** [m] if > 0: the maximum range of every laser, overriding the log; 0: from the line's
    * own field, else PARAM robot_*_laser_max, else saturation auto-detection. */
@@ -19,7 +18,7 @@ struct CarmenParams : public mrpt::config::CLoadableOptions
   /** Minimum readings in the cluster for a laser to count as saturating. */
   uint64_t saturation_min_count = 5;
   /** Replace non-increasing (and jumping) timestamps by previous + median period. */
-  bool repair_timestamps = false;
+  bool repair_timestamps = true;
   /** [s] a forward step larger than this is a timestamp problem (e.g. 2^32 overflow). */
   double max_timestamp_gap = 3600;
   /** [s] repair period of a stream with no usable positive period. */
@@ -27,15 +26,11 @@ struct CarmenParams : public mrpt::config::CLoadableOptions
   /** Drop the odometry: ODOM lines, or the laser lines' odom_* fields of a log without them. */
   bool laser_only = false;
   /** Warnings printed per kind (malformed line, timestamp); all are counted. */
-  uint64_t max_printed_warnings = 5;
+  uint64_t max_printed_warnings = 10;
 
+  static const common::ParamTable<CarmenParams>& table();
   /** Throws std::invalid_argument naming the first key out of its range. */
-  void check() const;
-
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                          const std::string& section) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
-                        const std::string& section) const override;
+  void check() const { table().check(*this); }
 };
 
 }  // namespace swslam::io

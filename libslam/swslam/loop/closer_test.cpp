@@ -1,6 +1,6 @@
 // Loop closure: candidate selection on plain graphs, verification of revisits on a
 // synthetic cluttered scene (fixed seeds), the gate's arithmetic, and the parameters.
-#include <swslam/common/config_keys.h>
+#include <swslam/common/param_table.h>
 #include <swslam/geometry/sensor_frame.h>
 #include <swslam/loop/closer.h>
 
@@ -295,29 +295,29 @@ TEST(LoopClosureParams, LoadsSavesAndRejectsBadValuesAndKeys)
   ini.write("loop_closure", "min_index_gap", 12);
   ini.write("loop_closure", "drift_theta_per_m_DEG", 0.5);
   ini.write("loop_closure", "enabled", false);
-  const auto p = common::loadStrict<LoopClosureParams>(ini, "loop_closure");
+  const auto p = LoopClosureParams::table().load(ini);
   EXPECT_EQ(p.min_index_gap, 12);
   EXPECT_FALSE(p.enabled);
   EXPECT_NEAR(p.drift_theta_per_m, 0.5 * kDeg, 1e-12);
   mrpt::config::CConfigFileMemory saved;
-  p.saveToConfigFile(saved, "loop_closure");
+  LoopClosureParams::table().save(p, saved);
   const mrpt::config::CConfigFileMemory reread(saved.getContent());  // as a file would be
-  const auto q = common::loadStrict<LoopClosureParams>(reread, "loop_closure");
+  const auto q = LoopClosureParams::table().load(reread);
   EXPECT_EQ(q.min_index_gap, 12);
   EXPECT_NEAR(q.drift_theta_per_m, p.drift_theta_per_m, 1e-9);
   EXPECT_NEAR(q.min_drift_sigma_theta, p.min_drift_sigma_theta, 1e-9);
 
   mrpt::config::CConfigFileMemory typo;
   typo.write("loop_closure", "max_distanse", 3.0);
-  EXPECT_THROW(common::loadStrict<LoopClosureParams>(typo, "loop_closure"), std::invalid_argument);
+  EXPECT_THROW(LoopClosureParams::table().load(typo), std::invalid_argument);
   mrpt::config::CConfigFileMemory bad;
   bad.write("loop_closure", "chi2_gate", -1.0);
-  EXPECT_THROW(common::loadStrict<LoopClosureParams>(bad, "loop_closure"), std::invalid_argument);
+  EXPECT_THROW(LoopClosureParams::table().load(bad), std::invalid_argument);
   mrpt::config::CConfigFileMemory window;
   window.write("loop_closure", "consistency_window", 4);
-  EXPECT_EQ(common::loadStrict<LoopClosureParams>(window, "loop_closure").consistency_window, 4);
+  EXPECT_EQ(LoopClosureParams::table().load(window).consistency_window, 4);
   window.write("loop_closure", "ambiguity_radius", 1.5);
-  EXPECT_EQ(common::loadStrict<LoopClosureParams>(window, "loop_closure").ambiguity_radius, 1.5);
+  EXPECT_EQ(LoopClosureParams::table().load(window).ambiguity_radius, 1.5);
   window.write("loop_closure", "consistency_window", -1);
-  EXPECT_THROW(common::loadStrict<LoopClosureParams>(window, "loop_closure"), std::invalid_argument);
+  EXPECT_THROW(LoopClosureParams::table().load(window), std::invalid_argument);
 }

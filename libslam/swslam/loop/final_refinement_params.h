@@ -1,13 +1,14 @@
 #pragma once
 // Parameters of the final refinement pass (doc/loop-closure.md), section [final_refinement].
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
 
-#include <cmath>
+#include <mrpt/core/bits_math.h>
+
 
 namespace swslam::loop
 {
-struct FinalRefinementParams : public mrpt::config::CLoadableOptions
+struct FinalRefinementParams
 {
   bool enabled = true;   ///< once the input ends, match every close unlinked pair of nodes
   int passes = 1;        ///< rounds of (match the pairs, add the accepted edges, optimize all)
@@ -19,15 +20,11 @@ struct FinalRefinementParams : public mrpt::config::CLoadableOptions
   double min_inlier_fraction = 0.3;  ///< of the newer scan's valid rays matched at the end
   double chi2_gate = 11.34;          ///< d^2 bound, 99 % of chi-square with 3 dof
   double sigma_xy = 0.1;             ///< [m] std of the optimized graph's relative position
-  double sigma_theta = 1.0 * M_PI / 180;  ///< [rad] (ini: sigma_theta_DEG)
+  double sigma_theta = mrpt::DEG2RAD(1.0);  ///< [rad]
   double max_correction_xy = 0.3;    ///< [m] the match may move the graph's guess at most this...
-  double max_correction_theta = 5.0 * M_PI / 180;  ///< [rad] ...and turn it at most this (ini: _DEG)
+  double max_correction_theta = mrpt::DEG2RAD(5.0);  ///< [rad] ...and turn it at most this
 
-  /** Throws std::invalid_argument naming the first out-of-range parameter. */
-  void check() const;
-
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<FinalRefinementParams>& table();
 };
 
 }  // namespace swslam::loop

@@ -125,7 +125,7 @@ TEST(FinalRefinementParams, OutOfRangeValuesAreErrorsNamingTheKey)
     mrpt::config::CConfigFileMemory cfg;
     cfg.write("final_refinement", key, value);
     FinalRefinementParams p;
-    p.loadFromConfigFile(cfg, "final_refinement");
+    FinalRefinementParams::table().load(cfg, p);
   };
   EXPECT_NO_THROW(load("passes", "2"));
   for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{

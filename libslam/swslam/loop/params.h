@@ -1,13 +1,14 @@
 #pragma once
 // Parameters of loop closure (paper sec. II.C and III.B), section [loop_closure].
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
 
-#include <cmath>
+#include <mrpt/core/bits_math.h>
+
 
 namespace swslam::loop
 {
-struct LoopClosureParams : public mrpt::config::CLoadableOptions
+struct LoopClosureParams
 {
   bool enabled = true;        ///< false: loopCandidates() returns none
   int min_index_gap = 30;     ///< a candidate is at least this many node ids older
@@ -20,9 +21,9 @@ struct LoopClosureParams : public mrpt::config::CLoadableOptions
   // Drift model of the graph's relative pose: a standard deviation proportional to the
   // distance travelled between the two nodes, floored.
   double drift_xy_per_m = 0.03;                  ///< [m/m] position std per metre travelled
-  double drift_theta_per_m = 0.3 * M_PI / 180;   ///< [rad/m] (ini: drift_theta_per_m_DEG)
+  double drift_theta_per_m = mrpt::DEG2RAD(0.3);  ///< [rad/m]
   double min_drift_sigma_xy = 0.1;               ///< [m] floor of the position std
-  double min_drift_sigma_theta = 1.0 * M_PI / 180;  ///< [rad] (ini: min_drift_sigma_theta_DEG)
+  double min_drift_sigma_theta = mrpt::DEG2RAD(1.0);  ///< [rad]
 
   // Corroboration: a verified loop becomes an edge only once another verified loop, its new
   // node and its old node each within this many ids of this loop's, agrees with it through
@@ -35,11 +36,7 @@ struct LoopClosureParams : public mrpt::config::CLoadableOptions
   double ambiguity_radius = 0.5;  ///< [m] (0: no check)
   double ambiguity_margin = 0.05;
 
-  /** Throws std::invalid_argument naming the first out-of-range parameter. */
-  void check() const;
-
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<LoopClosureParams>& table();
 };
 
 }  // namespace swslam::loop

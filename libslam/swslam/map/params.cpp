@@ -1,66 +1,36 @@
 #include <swslam/map/params.h>
 #include <swslam/map/summed_grid.h>
 
-#include <mrpt/config/CConfigFileBase.h>
-#include <mrpt/core/bits_math.h>
-
-#include <stdexcept>
 
 namespace swslam::map
 {
-void MapParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+const common::ParamTable<MapParams>& MapParams::table()
 {
-  MRPT_LOAD_CONFIG_VAR_CS(resolution, double);
-  MRPT_LOAD_CONFIG_VAR_CS(initial_half_size, double);
-  MRPT_LOAD_CONFIG_VAR_CS(grow_margin, double);
-  MRPT_LOAD_CONFIG_VAR_CS(prob_occupied, double);
-  MRPT_LOAD_CONFIG_VAR_CS(prob_free, double);
-  MRPT_LOAD_CONFIG_VAR_CS(max_insertion_range, double);
-  horizontal_tolerance = mrpt::DEG2RAD(
-      c.read_double(s, "horizontal_tolerance_DEG", mrpt::RAD2DEG(horizontal_tolerance)));
-  reinsert.translation = c.read_double(s, "reinsert_translation", reinsert.translation);
-  reinsert.rotation =
-      mrpt::DEG2RAD(c.read_double(s, "reinsert_rotation_DEG", mrpt::RAD2DEG(reinsert.rotation)));
-  MRPT_LOAD_CONFIG_VAR_CS(occupied_thresh, double);
-  MRPT_LOAD_CONFIG_VAR_CS(free_thresh, double);
-
-  check("config [" + s + "]");
-}
-
-void MapParams::check(const std::string& where) const
-{
-  auto require = [&](bool ok, const char* what) {
-    if (!ok) throw std::invalid_argument(where + ": " + what);
-  };
-  require(resolution >= 0.005 && resolution <= 10, "resolution must be in [0.005, 10] m");
-  require(initial_half_size > 0 && grow_margin >= 0, "initial_half_size must be > 0, grow_margin >= 0");
-  require(initial_half_size / resolution <= SummedGrid::kMaxCellsPerLength &&
-              grow_margin / resolution <= SummedGrid::kMaxCellsPerLength,
-          "initial_half_size and grow_margin must be at most 8192 cells (resolution times 8192)");
-  require(prob_occupied > 0.5 && prob_occupied < 1, "prob_occupied must be in (0.5, 1)");
-  require(prob_free > 0 && prob_free < 0.5, "prob_free must be in (0, 0.5)");
-  require(max_insertion_range > 0, "max_insertion_range must be > 0");
-  require(horizontal_tolerance >= 0, "horizontal_tolerance_DEG must be >= 0");
-  require(reinsert.translation >= 0 && reinsert.rotation >= 0, "reinsert_* must be >= 0");
-  require(free_thresh > 0 && free_thresh < occupied_thresh && occupied_thresh < 1,
-          "need 0 < free_thresh < occupied_thresh < 1");
-}
-
-void MapParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
-{
-  MRPT_SAVE_CONFIG_VAR_COMMENT(resolution, "[m] cell size");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(initial_half_size, "[m] the grid starts as [-s, s]^2 around the origin");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(grow_margin, "[m] room added beyond a scan that leaves the grid");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(prob_occupied, "eq. 16 prop_occupied: the cell at a ray's end");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(prob_free, "eq. 16 prop_free: the cells a ray crosses");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_insertion_range, "[m] rays are cut here");
-  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("horizontal_tolerance_DEG", horizontal_tolerance,
-                                       "[deg] a scan tilted more is an error");
-  c.write(s, "reinsert_translation", reinsert.translation);
-  MRPT_SAVE_CONFIG_VAR_DEGREES_COMMENT("reinsert_rotation_DEG", reinsert.rotation,
-                                       "[deg] re-insert a node's scan past this rotation");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(occupied_thresh, "Exports: occupancy above this is an obstacle");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(free_thresh, "Exports: occupancy below this is free");
+  using P = MapParams;
+  using common::Tier;
+  using common::above, common::atLeast, common::between, common::strictlyBetween;
+  constexpr double kMaxCells = SummedGrid::kMaxCellsPerLength;
+  static const auto t =
+      common::ParamTable<P>("map", "Occupancy grid map (paper sec. IV), log-odds; moved nodes' scans re-inserted.")
+          .real("resolution", &P::resolution, "m", between(0.005, 10), "cell size", Tier::User)
+          .real("max_insertion_range", &P::max_insertion_range, "m", above(0), "rays are cut here (no hit inserted beyond)",
+                Tier::User)
+          .real("occupied_thresh", &P::occupied_thresh, "", strictlyBetween(0, 1),
+                "exports (map.yaml/pgm, map.bt): occupancy above this is an obstacle...", Tier::User)
+          .real("free_thresh", &P::free_thresh, "", strictlyBetween(0, 1), "...and below this is free", Tier::User)
+          .real("initial_half_size", &P::initial_half_size, "m", above(0), "the grid starts as [-s, s]^2 around the origin...")
+          .real("grow_margin", &P::grow_margin, "m", atLeast(0),
+                "...and grows by this much beyond a scan that leaves it (each at most 8192 cells)")
+          .real("prob_occupied", &P::prob_occupied, "", strictlyBetween(0.5, 1), "eq. 16 prop_occupied: the cell at a ray's end")
+          .real("prob_free", &P::prob_free, "", strictlyBetween(0, 0.5), "eq. 16 prop_free: the cells a ray crosses")
+          .angle("horizontal_tolerance_DEG", &P::horizontal_tolerance, atLeast(0), "a scan tilted more than this is an error")
+          .real("reinsert_translation", &P::reinsert_translation, "m", atLeast(0),
+                "after an optimization, a node's scan is re-inserted if it moved more than this...")
+          .angle("reinsert_rotation_DEG", &P::reinsert_rotation, atLeast(0), "...or turned more than this")
+          .rule([=](const P& p) { return p.initial_half_size / p.resolution <= kMaxCells && p.grow_margin / p.resolution <= kMaxCells; },
+                "initial_half_size and grow_margin must be at most 8192 cells (resolution times 8192)")
+          .rule([](const P& p) { return p.free_thresh < p.occupied_thresh; }, "need free_thresh < occupied_thresh");
+  return t;
 }
 
 mrpt::maps::COccupancyGridMap2D::TInsertionOptions MapParams::insertionOptions() const

@@ -2,6 +2,7 @@
 #include <swslam/sim/scenario_check.h>
 
 #include <swslam/common/config_keys.h>
+#include <swslam/common/param_table.h>
 #include <swslam/common/ini_file.h>
 
 #include <mrpt/config/CConfigFileMemory.h>

@@ -1,49 +1,16 @@
 #include <swslam/system/config.h>
 
-#include <swslam/common/config_keys.h>
 #include <swslam/common/ini_file.h>
 
-
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 namespace swslam::system
 {
-namespace
-{
-/** The module table, for const and non-const access alike. */
-template <class Options, class Params>
-std::vector<std::pair<std::string, Options*>> modulesOf(Params& p)
-{
-  return {{"plicp", &p.plicp},
-          {"tracking", &p.tracking},
-          {"correlative", &p.correlative},
-          {"carmen", &p.carmen},
-          {"graph_optimizer", &p.graph_optimizer},
-          {"loop_closure", &p.loop_closure},
-          {"final_refinement", &p.final_refinement},
-          {"map", &p.map},
-          {"system", &p.system}};
-}
-}  // namespace
-
-std::vector<std::pair<std::string, mrpt::config::CLoadableOptions*>> SystemParams::modules()
-{
-  return modulesOf<mrpt::config::CLoadableOptions>(*this);
-}
-
-std::vector<std::pair<std::string, const mrpt::config::CLoadableOptions*>> SystemParams::modules()
-    const
-{
-  return modulesOf<const mrpt::config::CLoadableOptions>(*this);
-}
-
 std::vector<std::string> SystemParams::sections()
 {
   std::vector<std::string> names;
-  for (const auto& [name, m] : SystemParams().modules()) names.push_back(name);
+  const SystemParams p;
+  forEachSection(p, [&](const auto& table, const auto&) { names.push_back(table.section()); });
   return names;
 }
 
@@ -59,12 +26,7 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg,
   allowed.insert(allowed.end(), other_sections.begin(), other_sections.end());
   common::checkKnownSections(cfg, allowed);
   SystemParams p;
-  for (auto& [name, module] : p.modules())
-  {
-    common::checkKnownKeys(cfg, name, *module);
-    module->loadFromConfigFile(cfg, name);
-    common::checkReadBack(cfg, name, *module);
-  }
+  SystemParams::forEachSection(p, [&](const auto& table, auto& params) { table.load(cfg, params); });
   checkCrossSectionRules(p);
   return p;
 }
@@ -79,7 +41,32 @@ void checkCrossSectionRules(const SystemParams& params)
 
 void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase& cfg)
 {
-  for (const auto& [name, module] : params.modules()) module->saveToConfigFile(cfg, name);
+  SystemParams::forEachSection(params, [&](const auto& table, const auto& p) { table.save(p, cfg); });
+}
+
+std::string configText(const SystemParams& params, common::Tier tier)
+{
+  std::string text;
+  SystemParams::forEachSection(params, [&](const auto& table, const auto& p) {
+    const std::string section = table.ini(p, tier);
+    if (!section.empty()) text += (text.empty() ? "" : "\n") + section;
+  });
+  return text;
+}
+
+std::string shippedConfigFile(common::Tier tier)
+{
+  const std::string header =
+      tier == common::Tier::User
+          ? "# swslam's configuration: the keys a user tunes, at the values behind every figure in doc/.\n"
+            "# The other keys are in config/expert.ini at their defaults; any of them may be set here too,\n"
+            "# under its section. An unknown section or key is an error naming it. Units in brackets;\n"
+            "# angles in degrees where the key ends in _DEG. Written by swslam-config (doc/configuration.md).\n"
+          : "# swslam's expert keys at their defaults, the values behind every figure in doc/. To change one,\n"
+            "# copy it under its section into the file given with -c (e.g. a copy of config/default.ini).\n"
+            "# An unknown section or key is an error naming it. Units in brackets; angles in degrees where\n"
+            "# the key ends in _DEG. Written by swslam-config --tier expert (doc/configuration.md).\n";
+  return header + "\n" + configText(SystemParams(), tier);
 }
 
 SystemParams loadSystemParams(const std::string& ini_path)

@@ -4,18 +4,17 @@
 
 #include <swslam/correlative/params.h>
 #include <swslam/graph/optimizer_params.h>
-#include <swslam/io/carmen_log.h>
+#include <swslam/io/carmen_params.h>
 #include <swslam/loop/final_refinement_params.h>
 #include <swslam/loop/params.h>
 #include <swslam/map/params.h>
-#include <swslam/plicp/plicp.h>
+#include <swslam/plicp/params.h>
 #include <swslam/system/options.h>
 #include <swslam/tracking/params.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace swslam::system
@@ -32,10 +31,21 @@ struct SystemParams
   map::MapParams map;        ///< [map]
   SystemOptions system;  ///< [system]
 
-  /** Each module's section name and parameters, in file order: the one list every load,
-   * save and section check goes through. */
-  std::vector<std::pair<std::string, mrpt::config::CLoadableOptions*>> modules();
-  std::vector<std::pair<std::string, const mrpt::config::CLoadableOptions*>> modules() const;
+  /** Calls visit(table, parameters) for each section, in file order: the one list every
+   * load, save, check and written file goes through. */
+  template <class Params, class Visit>
+  static void forEachSection(Params& p, Visit visit)
+  {
+    visit(plicp::PlicpParams::table(), p.plicp);
+    visit(tracking::TrackingParams::table(), p.tracking);
+    visit(correlative::CorrelativeParams::table(), p.correlative);
+    visit(io::CarmenParams::table(), p.carmen);
+    visit(graph::GraphOptimizerParams::table(), p.graph_optimizer);
+    visit(loop::LoopClosureParams::table(), p.loop_closure);
+    visit(loop::FinalRefinementParams::table(), p.final_refinement);
+    visit(map::MapParams::table(), p.map);
+    visit(SystemOptions::table(), p.system);
+  }
 
   /** Section names, in file order. */
   static std::vector<std::string> sections();
@@ -55,7 +65,15 @@ SystemParams loadSystemParams(const mrpt::config::CConfigFileBase& cfg,
                               const std::vector<std::string>& other_sections);
 SystemParams loadSystemParams(const std::string& ini_path);
 
-/** Writes every section with its current values (what default.ini documents). */
+/** Writes every section with its current values. */
 void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase& cfg);
+
+/** Every section's keys of one tier, each with its unit, one line of doc and its value in
+ * `params`. */
+std::string configText(const SystemParams& params, common::Tier tier);
+
+/** The file config/default.ini (Tier::User) or config/expert.ini (Tier::Expert) as shipped:
+ * a header, then configText() of the defaults. */
+std::string shippedConfigFile(common::Tier tier);
 
 }  // namespace swslam::system

@@ -1,5 +1,5 @@
 // Every shipped config file loads strictly; wrong keys and sections are errors naming them.
-#include <swslam/common/config_keys.h>
+#include <swslam/common/param_table.h>
 #include <swslam/system/config.h>
 
 #include <swslam/io/hokuyo_link.h>
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -38,36 +39,39 @@ TEST(Config, EveryFileInConfigDirLoads)
   EXPECT_GE(files, 1u);
 }
 
-TEST(Config, DefaultFileSetsEveryKeyOfEveryModule)
+namespace
 {
-  // config/default.ini documents every parameter: each key a module writes is in the file.
-  const mrpt::config::CConfigFile file(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
-  const SystemParams defaults;
-  mrpt::config::CConfigFileMemory written;
-  saveSystemParams(defaults, written);
-  for (const auto& section : SystemParams::sections())
-  {
-    std::vector<std::string> keys;
-    written.getAllKeys(section, keys);
-    ASSERT_FALSE(keys.empty()) << section;
-    for (auto key : keys)
-    {
-      key = mrpt::system::trim(key);
-      EXPECT_TRUE(file.keyExists(section, key)) << "[" << section << "] " << key << " missing";
-    }
-  }
+std::string fileText(const std::string& path)
+{
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
+}  // namespace
 
-TEST(Config, DefaultFileValuesEqualTheInClassDefaults)
+TEST(Config, TheShippedFilesAreTheTablesOfEveryModule)
 {
-  const auto loaded = loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
-  const plicp::PlicpParams d;
-  EXPECT_DOUBLE_EQ(loaded.plicp.max_correspondence_dist, d.max_correspondence_dist);
-  EXPECT_DOUBLE_EQ(loaded.plicp.min_segment_length, d.min_segment_length);
-  EXPECT_NEAR(loaded.plicp.epsilon_theta, d.epsilon_theta, 1e-6);
-  EXPECT_NEAR(loaded.plicp.max_correction_theta, d.max_correction_theta, 1e-9);
-  EXPECT_EQ(loaded.plicp.max_iterations, d.max_iterations);
-  EXPECT_EQ(loaded.plicp.remove_doubles, d.remove_doubles);
+  // config/default.ini and config/expert.ini are written from the modules' key tables
+  // (swslam-config): every key once, with its unit, its doc line and its in-class default.
+  const std::string dir = std::string(SWSLAM_SOURCE_DIR) + "/config/";
+  EXPECT_EQ(fileText(dir + "default.ini"), shippedConfigFile(common::Tier::User))
+      << "write it again: build/apps/swslam-config > config/default.ini";
+  EXPECT_EQ(fileText(dir + "expert.ini"), shippedConfigFile(common::Tier::Expert))
+      << "write it again: build/apps/swslam-config --tier expert > config/expert.ini";
+  // Read back, the two files give the in-class defaults, and each key is in one of them.
+  const SystemParams d;
+  for (const auto* file : {"default.ini", "expert.ini"})
+  {
+    const SystemParams loaded = loadSystemParams(dir + file);
+    for (const auto tier : {common::Tier::User, common::Tier::Expert})
+      EXPECT_EQ(configText(loaded, tier), configText(d, tier)) << file;
+  }
+  size_t keys = 0;
+  SystemParams::forEachSection(d, [&](const auto& table, const auto&) {
+    const auto user = table.names(common::Tier::User), expert = table.names(common::Tier::Expert);
+    EXPECT_EQ(user.size() + expert.size(), table.names().size()) << table.section();
+    keys += table.names().size();
+  });
+  EXPECT_GT(keys, 100u);
 }
 
 TEST(Config, MisspelledKeyIsAnErrorNamingIt)
@@ -118,8 +122,9 @@ void expectLoadError(const std::string& text, const std::string& expected)
 TEST(Config, AMapTooLargeToAllocateIsAnErrorNotACrash)
 {
   // An infinite or huge first map would be cast to a cell count past an int's range.
-  for (const char* text : {"[map]\ninitial_half_size = inf\n", "[map]\ninitial_half_size = 1e9\n",
-                           "[map]\ngrow_margin = 1e9\n", "[map]\nresolution = 0.005\ninitial_half_size = 41\n"})
+  expectLoadError("[map]\ninitial_half_size = inf\n", "initial_half_size must be > 0 m");
+  for (const char* text : {"[map]\ninitial_half_size = 1e9\n", "[map]\ngrow_margin = 1e9\n",
+                           "[map]\nresolution = 0.005\ninitial_half_size = 41\n"})
     expectLoadError(text, "at most 8192 cells");
   mrpt::config::CConfigFileMemory ok("[map]\nresolution = 0.005\ninitial_half_size = 40\n");
   EXPECT_NO_THROW(loadSystemParams(ok));
@@ -146,9 +151,11 @@ TEST(Config, AnIntegerKeyReadAsAnotherNumberIsAnError)
 {
   // MRPT's reader takes the leading digits of an integer key ("1e3" as 1, "2.5" as 2) and an
   // unsigned "-1" as 2^64 - 1, silently.
-  for (const char* text : {"[plicp]\nmax_iterations = 1e3\n", "[plicp]\nmax_iterations = 40.5\n",
-                           "[graph_optimizer]\nfull_optimization_interval = -1\n"})
+  for (const char* text : {"[plicp]\nmax_iterations = 1e3\n", "[plicp]\nmax_iterations = 40.5\n"})
     expectLoadError(text, "is not an integer");
+  // A negative count is out of its range before it could wrap.
+  expectLoadError("[graph_optimizer]\nfull_optimization_interval = -1\n", "full_optimization_interval = '-1' must be >= 1");
+  expectLoadError("[carmen]\nsaturation_min_count = -1\n", "saturation_min_count = '-1' must be >= 1");
   // The same numbers written as integers, and floating-point keys, are taken.
   mrpt::config::CConfigFileMemory ok("[plicp]\nmax_iterations = 1000\nepsilon_xy = 1e-3\n"
                                      "[graph_optimizer]\nfull_optimization_interval = 3\n");

@@ -17,7 +17,7 @@ MapStep MapModule::handle(const MapMessage& message)
   {
     const auto& re = std::get<MapReinsert>(message);
     step.scan = re.scan;
-    step.reinserted = builder_.reinsertMoved(re.poses, builder_.params().reinsert);
+    step.reinserted = builder_.reinsertMoved(re.poses, builder_.params().reinsertThreshold());
   }
   return step;
 }

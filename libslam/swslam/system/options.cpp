@@ -1,39 +1,25 @@
 #include <swslam/system/options.h>
 
-#include <mrpt/config/CConfigFileBase.h>
-
-#include <stdexcept>
-
 namespace swslam::system
 {
-void SystemOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+const common::ParamTable<SystemOptions>& SystemOptions::table()
 {
-  MRPT_LOAD_CONFIG_VAR_CS(input_queue_capacity, int);
-  MRPT_LOAD_CONFIG_VAR_CS(final_full_optimization, bool);
-  MRPT_LOAD_CONFIG_VAR_CS(max_printed_warnings, int);
-  MRPT_LOAD_CONFIG_VAR_CS(timestamp_resume_scans, int);
-  MRPT_LOAD_CONFIG_VAR_CS(max_graph_lag, int);
-  MRPT_LOAD_CONFIG_VAR_CS(max_odometry_speed, double);
-  if (input_queue_capacity < 1)
-    throw std::invalid_argument("config [" + s + "]: input_queue_capacity must be >= 1");
-  if (max_printed_warnings < 0)
-    throw std::invalid_argument("config [" + s + "]: max_printed_warnings must be >= 0");
-  if (timestamp_resume_scans < 0)
-    throw std::invalid_argument("config [" + s + "]: timestamp_resume_scans must be >= 0");
-  if (max_graph_lag < -1)
-    throw std::invalid_argument("config [" + s + "]: max_graph_lag must be >= 0, or -1 for no bound");
-  if (!(max_odometry_speed >= 0 && max_odometry_speed <= 1e4))
-    throw std::invalid_argument("config [" + s + "]: max_odometry_speed must be in [0, 1e4] m/s (0: no check)");
-}
-
-void SystemOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
-{
-  MRPT_SAVE_CONFIG_VAR_COMMENT(input_queue_capacity, "threaded mode: scans waiting for tracking at most");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(final_full_optimization, "optimize the whole graph once the input ends");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_printed_warnings, "skipped-scan messages printed per kind");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(timestamp_resume_scans, "this many scans in order behind the last taken one resume the log (0: never)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_odometry_speed, "[m/s] a longer odometry increment (per second since the previous scan, at least one second's worth) is dropped (0: no check)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_graph_lag, "threaded mode: keyframes the graph thread has not finished at most when tracking takes a scan (-1: no bound)");
+  using P = SystemOptions;
+  using common::atLeast;
+  static const auto t =
+      common::ParamTable<P>("system", "How the three modules run (doc/system.md).")
+          .integer("input_queue_capacity", &P::input_queue_capacity, "", atLeast(1),
+                   "threaded mode: scans waiting for tracking at most (reading waits when it is full)")
+          .flag("final_full_optimization", &P::final_full_optimization, "optimize the whole graph once the input ends")
+          .integer("max_printed_warnings", &P::max_printed_warnings, "", atLeast(0),
+                   "skipped-scan messages printed per kind; all are counted")
+          .integer("timestamp_resume_scans", &P::timestamp_resume_scans, "", atLeast(0),
+                   "this many scans in order behind a stamp that jumped forward resume the log (0: never)")
+          .integer("max_graph_lag", &P::max_graph_lag, "", atLeast(-1),
+                   "threaded mode: keyframes the graph thread may lag behind tracking (0: none, as deterministic; -1: no bound)")
+          .real("max_odometry_speed", &P::max_odometry_speed, "m/s", common::between(0, 1e4),
+                "an odometry increment beyond this speed since the previous scan is dropped and said (0: no check)");
+  return t;
 }
 
 }  // namespace swslam::system

@@ -1,11 +1,12 @@
 #pragma once
 // Parameters of the system as a whole (how the three modules run), section [system].
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
 
 namespace swslam::system
 {
-struct SystemOptions : public mrpt::config::CLoadableOptions
+/** Section [system]: declared in table() (options.cpp). */
+struct SystemOptions
 {
   int input_queue_capacity = 200;  ///< threaded mode: scans waiting for tracking at most (feed() waits)
   bool final_full_optimization = true;  ///< optimize the whole graph once the input ends
@@ -18,8 +19,7 @@ struct SystemOptions : public mrpt::config::CLoadableOptions
   /// scan (at least one second's worth) is dropped and said, not fed to tracking (0: no check)
   double max_odometry_speed = 50;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<SystemOptions>& table();
 };
 
 }  // namespace swslam::system

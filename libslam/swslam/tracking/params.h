@@ -1,24 +1,25 @@
 #pragma once
 // Parameters of local tracking (paper sec. II.C), section [tracking].
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
 
-#include <cmath>
+#include <mrpt/core/bits_math.h>
 
 namespace swslam::tracking
 {
-struct TrackingParams : public mrpt::config::CLoadableOptions
+/** Parameters of local tracking, section [tracking]: declared in table() (params.cpp). */
+struct TrackingParams
 {
   double min_range = 0.1;              ///< [m] shorter readings are dropped (sensor's blind zone)
   double keyframe_translation = 0.5;   ///< [m] a new node past this motion from the last one...
-  double keyframe_rotation = 10.0 * M_PI / 180;  ///< [rad] ...or this turn (ini: keyframe_rotation_DEG)
+  double keyframe_rotation = mrpt::DEG2RAD(10.0);  ///< [rad] ...or this turn
   double dense_radius = 4.0;           ///< [m] a new node is matched with every node this close (Fig. 2)
   int max_dense_edges = 8;             ///< at most this many dense edges per node, nearest first
   int dense_max_index_gap = 30;        ///< dense edges only to the last this many nodes (older: loops)
   double dense_gate_xy = 0.3;          ///< [m] a dense match farther than this from the tracked estimate is dropped...
-  double dense_gate_theta = 5.0 * M_PI / 180;  ///< [rad] ...or turned more (ini: dense_gate_theta_DEG)
+  double dense_gate_theta = mrpt::DEG2RAD(5.0);  ///< [rad] ...or turned more
   double lost_prior_sigma_xy = 1.0;    ///< [m] std of the weak prior edge when a node is made without a match
-  double lost_prior_sigma_theta = 10.0 * M_PI / 180;  ///< [rad] (ini: lost_prior_sigma_theta_DEG)
+  double lost_prior_sigma_theta = mrpt::DEG2RAD(10.0);  ///< [rad]
   bool constant_velocity = true;   ///< predict the previous motion over the new scan interval (false: per scan)
   double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
   /** A match direction is weak (ambiguous) when its information is below this many times what
@@ -46,8 +47,7 @@ struct TrackingParams : public mrpt::config::CLoadableOptions
    * best pose (from the guess only if the search finds nothing). */
   bool search_first_match = true;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<TrackingParams>& table();
 };
 
 }  // namespace swslam::tracking
