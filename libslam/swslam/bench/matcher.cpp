@@ -1,11 +1,12 @@
 #include <swslam/bench/matcher.h>
 
 #include <swslam/correlative/search.h>
-#include <swslam/correlative/searched_match.h>
+#include <swslam/correlative/search_setup.h>
 #include <swslam/geometry/sensor_frame.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/plicp/correspondences.h>
 #include <swslam/plicp/run.h>
+#include <swslam/tracking/scan_matcher.h>
 
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/slam/CICP.h>
@@ -57,49 +58,26 @@ MatcherFn plicpMatcher(const plicp::PlicpParams& params)
   };
 }
 
-/** PLICP as tracking uses it: when tracking would search after the match (searchNeeded(): the
- * match says a measured guess was poor, or the guess is not measured and
- * `tracking.search_first_match`), a correlative search around the guess over the reference scan's
- * rays, then PLICP from the search's best pose (searchAndMatch()), and what tracking keeps of
- * the two (afterSearch()). The search grid is built per pair and timed. */
+/** PLICP as tracking uses it: tracking's scan matcher (tracking::ScanMatcher: the match, the
+ * correlative search when the match or an unmeasured guess calls for it, the choice), against
+ * the reference scan alone, whose rays the search's grid holds (built per pair, and timed). A
+ * match the search's choice leaves unmatched counts as failed, at the guess. */
 MatcherFn plicpSearchMatcher(const plicp::PlicpParams& params, const correlative::CorrelativeParams& search,
                              const tracking::TrackingParams& tracking)
 {
-  return [params, search, tracking](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
-                                 const CPose2D& guess, bool guess_measured) {
+  const tracking::ScanForms forms{params, search.resolution, search.max_range};
+  return [params, search, tracking, forms](const CObservation2DRangeScan& a, const CObservation2DRangeScan& b,
+                                           const CPose2D& guess, bool guess_measured) {
     const CPose2D s(a.sensorPose);
-    const plicp::ReferenceScan ref(sensor::scanFromObservation(a), params);
-    const sensor::Scan cur = sensor::scanFromObservation(b);
-    const CPose2D g = geometry::sensorMotion(s, guess);
-    const bool search_first = search.enabled && correlative::searchFirst(guess_measured, tracking.search_first_match);
-    plicp::MatchResult r = search_first ? correlative::notRun(g) : plicp::matchScans(ref, cur, g, params);
-    int iterations = r.iterations;
-    const correlative::SearchTrigger why = correlative::searchTrigger(r, g, search);
-    const bool searched = search.enabled && correlative::searchNeeded(why, guess_measured, tracking.search_first_match, false);
-    if (searched)
-    {
-      correlative::SearchedMatch m = correlative::searchAndMatch(
-          ref, correlative::searchPyramid(correlative::scanRays(ref.scan, search.max_range), search), cur, g, r,
-          search, params);
-      iterations += m.searched_iterations;
-      if (search_first && !m.replaced)
-      {
-        m.match = r = plicp::matchScans(ref, cur, g, params);
-        iterations += r.iterations;
-      }
-      switch (correlative::afterSearch(why, m, tracking.overlap_search_min_inlier_fraction,
-                                       tracking.searched_min_inlier_fraction))
-      {
-        case correlative::AfterSearch::KeepFirst:
-          break;
-        case correlative::AfterSearch::Unmatched:
-          return Estimate{guess, iterations, false, true};
-        case correlative::AfterSearch::Chosen:
-          r = m.match;
-          break;
-      }
-    }
-    return Estimate{geometry::vehicleMotion(s, r.pose), iterations, r.ok(), searched};
+    const auto ref = std::make_shared<const plicp::ReferenceScan>(sensor::scanFromObservation(a), params);
+    const tracking::Submap submap(ref, [&] { return correlative::scanRays(ref->scan, search.max_range); });
+    const tracking::PreparedScan cur(sensor::scanFromObservation(b), forms);
+    tracking::Prediction prediction;
+    prediction.guess = geometry::sensorMotion(s, guess);
+    prediction.measured = guess_measured;
+    const tracking::ScanMatch m = tracking::ScanMatcher(tracking, params, search).match(submap, cur, prediction);
+    if (m.unmatched) return Estimate{guess, m.iterations, false, m.searched};
+    return Estimate{geometry::vehicleMotion(s, m.match.pose), m.iterations, m.match.ok(), m.searched};
   };
 }
 
@@ -234,7 +212,7 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
   std::vector<double> first, grid, bnb, total, evaluated;
   // Identity is a guess: with search_first_match it is searched first, and PLICP runs from the
   // search's best pose; else PLICP from identity runs first, and the search only if it says so.
-  const bool search_first = correlative::searchFirst(false, tracking.search_first_match);
+  const bool search_first = tracking::searchFirst(false, tracking.search_first_match);
   for (size_t k = 0; k + stride < data.scans.size(); k += stride)
   {
     const CObservation2DRangeScan& a = *data.scans[k];
@@ -250,7 +228,7 @@ SearchFloor searchFloor(const io::ScansWithTruth& data, size_t stride, const pli
       timer.Tic();
       const plicp::MatchResult m = plicp::matchScans(ref, cur, guess, plicp_params);
       t_plicp = timer.Tac();
-      if (!correlative::searchNeeded(correlative::searchTrigger(m, guess, search_params), false, false, false))
+      if (!tracking::searchNeeded(tracking::searchTrigger(m, guess, tracking), false, false, false))
         continue;
     }
     f.searched++;

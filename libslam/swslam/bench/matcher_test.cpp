@@ -110,16 +110,19 @@ TEST(MatcherBenchmark, SearchFloorTimesThePartsOfTheSearchedPairs)
   EXPECT_NE(swslam::bench::formatSearchFloor(f).find("by_level="), std::string::npos);
   // A search that never triggers: no pair is searched, and no time is reported, unless
   // identity, a guess, is searched as tracking searches a run's first match.
-  swslam::correlative::CorrelativeParams never;
+  swslam::tracking::TrackingParams never = trigger_only;
   never.trigger_correction_xy = 100;
   never.trigger_correction_theta = 10;
   never.trigger_inlier_fraction = 0;
   const swslam::bench::SearchFloor none =
-      swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never, trigger_only);
+      swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), swslam::correlative::CorrelativeParams(), never);
   EXPECT_EQ(none.pairs, 5u);
   EXPECT_EQ(none.searched, 0u);
   EXPECT_EQ(none.total_us, 0.0);
-  EXPECT_EQ(swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), never).searched, 5u);
+  never.search_first_match = true;
+  EXPECT_EQ(swslam::bench::searchFloor(data, 1, swslam::plicp::PlicpParams(), swslam::correlative::CorrelativeParams(), never)
+                .searched,
+            5u);
   EXPECT_NE(swslam::bench::formatSearchFloor(f).find("search-floor  init=identity  pairs=5 searched=5 median_us="),
             std::string::npos);
 }

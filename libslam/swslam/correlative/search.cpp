@@ -373,4 +373,25 @@ CommonScores commonScores(const ScoreGrid& grid, const std::vector<Eigen::Vector
   return out;
 }
 
+MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+                               const SearchWindow& w, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               double common_points_fraction, double goes_on_ratio)
+{
+  MatchComparison out;
+  if (common_points_fraction > 0)
+  {
+    const CommonScores c = commonScores(grid, points, a, b, goes_on_ratio);
+    if (c.points > 0 && c.points >= common_points_fraction * points.size())
+    {
+      out.a = objective(w, c.a, a);
+      out.b = objective(w, c.b, b);
+      out.common_points = c.points;
+      return out;
+    }
+  }
+  out.a = objective(w, scoreAt(grid, points, a), a);
+  out.b = objective(w, scoreAt(grid, points, b), b);
+  return out;
+}
+
 }  // namespace swslam::correlative

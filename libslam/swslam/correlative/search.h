@@ -93,6 +93,19 @@ struct CommonScores
 CommonScores commonScores(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
                           const Eigen::Vector3d& a, const Eigen::Vector3d& b, double goes_on_ratio);
 
+/** Two poses' objectives (score on the grid less the window's motion prior) on the points
+ * that can tell them apart (commonScores, with goes_on_ratio) when at least
+ * common_points_fraction of the points are (and some are), else on all the points (scoreAt).
+ * How the choice between two matches of a scan compares them. */
+struct MatchComparison
+{
+  double a = 0, b = 0;       ///< the objectives at pose a and pose b
+  size_t common_points = 0;  ///< the points compared on (0: all of them)
+};
+MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::Vector2d>& points,
+                               const SearchWindow& w, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               double common_points_fraction, double goes_on_ratio);
+
 /** Pyramid depth needed for a window: the smallest h with 2^h >= 2 half_xy / resolution + 1. */
 int depthForWindow(double half_xy, double resolution);
 

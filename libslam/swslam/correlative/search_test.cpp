@@ -1,5 +1,6 @@
 // The correlative search: score grid, pyramid and branch and bound against brute force.
 #include <swslam/correlative/search.h>
+#include <swslam/correlative/search_setup.h>
 
 #include <gtest/gtest.h>
 
@@ -485,4 +486,15 @@ TEST(CorrelativeSearch, CommonScoresLeaveOutWhatASurfaceGoingOnWouldSupportAtEit
   EXPECT_NEAR(mid.a, mid.b, 0.05);
   // With a ratio above 1 no surface goes on: the wall's point counts too.
   EXPECT_EQ(commonScores(grid, {{0.2, 1}}, here, back, 2.0).points, 1u);
+}
+
+TEST(CorrelativeSearch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
+{
+  sensor::Scan s;
+  s.points = {{1, 0}, {0, 5}, {-3, 4}};
+  const auto rays = scanRays(s, 4.5);
+  ASSERT_EQ(rays.size(), 1u);
+  EXPECT_EQ(rays[0].origin, Eigen::Vector2d::Zero());
+  EXPECT_EQ(rays[0].hit, Eigen::Vector2d(1, 0));
+  EXPECT_EQ(scanRays(s, 5.0).size(), 3u);
 }

@@ -4,7 +4,7 @@
 
 #include <swslam/correlative/peaks.h>
 #include <swslam/correlative/search.h>
-#include <swslam/correlative/searched_match.h>
+#include <swslam/correlative/search_setup.h>
 #include <swslam/geometry/sensor_frame.h>
 
 #include <mrpt/math/wrap2pi.h>

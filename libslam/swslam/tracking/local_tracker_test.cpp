@@ -278,12 +278,11 @@ namespace
  * front of the sensor and hides most of the room (the next keyframe then holds the door).
  * Returns, for that scan and the next two, whether it was searched, and the worst position
  * error among them [m]. */
-std::pair<std::vector<bool>, double> doorSwingsShut(const correlative::CorrelativeParams& cp, int shut,
-                                                    const TrackingParams& tp = TrackingParams())
+std::pair<std::vector<bool>, double> doorSwingsShut(int shut, const TrackingParams& tp = TrackingParams())
 {
   const auto room = test::roomWorld();
   std::mt19937 rng(12);
-  LocalTracker tracker(tp, plicp::PlicpParams(), cp);
+  LocalTracker tracker(tp, plicp::PlicpParams());
   std::vector<bool> searched;
   double worst = 0;
   for (int k = 0; k <= shut + 2; k++)
@@ -306,15 +305,15 @@ std::pair<std::vector<bool>, double> doorSwingsShut(const correlative::Correlati
 
 TEST(LocalTracker, AProvenPredictionIsKeptWhenTheSurroundingsChange)
 {
-  correlative::CorrelativeParams cp;  // trust_prediction_after = 10
-  const auto [searched, worst] = doorSwingsShut(cp, 30);
+  TrackingParams tp;  // trust_prediction_after = 10
+  const auto [searched, worst] = doorSwingsShut(30, tp);
   EXPECT_EQ(searched, std::vector<bool>({false, false, false}));
   EXPECT_LT(worst, 0.05);
   // Not yet proven (5 scans before the door), or never trusted: the little overlap alone
   // calls for the search.
-  EXPECT_TRUE(doorSwingsShut(cp, 5).first.front());
-  cp.trust_prediction_after = 0;
-  EXPECT_TRUE(doorSwingsShut(cp, 30).first.front());
+  EXPECT_TRUE(doorSwingsShut(5, tp).first.front());
+  tp.trust_prediction_after = 0;
+  EXPECT_TRUE(doorSwingsShut(30, tp).first.front());
 }
 
 TEST(LocalTracker, ADoorInFrontIsNotPutOnAWallElsewhere)
@@ -324,12 +323,11 @@ TEST(LocalTracker, ADoorInFrontIsNotPutOnAWallElsewhere)
   // the door on a wall 2.4 m away with few inliers too. That pose replaces a match on its
   // prediction only with overlap_search_min_inlier_fraction of the rays: the first match
   // stays.
-  correlative::CorrelativeParams cp;
-  cp.trust_prediction_after = 0;
   TrackingParams tp;  // overlap_search_min_inlier_fraction = 0.2
-  EXPECT_LT(doorSwingsShut(cp, 20, tp).second, 0.1);
+  tp.trust_prediction_after = 0;
+  EXPECT_LT(doorSwingsShut(20, tp).second, 0.1);
   tp.overlap_search_min_inlier_fraction = tp.searched_min_inlier_fraction;  // no higher bar
-  EXPECT_GT(doorSwingsShut(cp, 20, tp).second, 1.0);
+  EXPECT_GT(doorSwingsShut(20, tp).second, 1.0);
 }
 
 TEST(LocalTracker, DenseMatchesFarFromTheEstimateAreDropped)
@@ -386,13 +384,12 @@ struct WeakRun
  * and 2 m (181 beams over 180°, 8 m, 1 cm noise): the posts show the motion until the sensor
  * passes them at scan 20, and nothing tells it after that but the prediction, exact here at
  * constant velocity. Scan `blind` has no valid ray. */
-WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind,
-                    const correlative::CorrelativeParams& cp = correlative::CorrelativeParams())
+WeakRun driveAlongX(test::World world, const TrackingParams& tp, int blind)
 {
   world.circles.push_back({1.0, 0.7, 0.1});
   world.circles.push_back({2.0, -0.7, 0.1});
   std::mt19937 rng(21);
-  LocalTracker tracker(tp, plicp::PlicpParams(), cp);
+  LocalTracker tracker(tp, plicp::PlicpParams());
   WeakRun r;
   double x_error_20 = 0, x_error_previous = 0;
   for (int k = 0; k < 60; k++)
@@ -434,15 +431,14 @@ TEST(LocalTracker, AlongACorridorThePredictionDecidesAndTheEdgesSaySo)
   // prediction): the searches slide the scans along the axis by decimetres at a time, and the
   // noise's faked information makes confident edges along it.
   tp.unobservable_min_rays = 0;
-  correlative::CorrelativeParams scans_choose;
-  scans_choose.prediction_decides_share = 0;
-  const WeakRun reported = driveAlongX(test::corridorWorld(), tp, 35, scans_choose);
+  tp.prediction_decides_share = 0;
+  const WeakRun reported = driveAlongX(test::corridorWorld(), tp, 35);
   EXPECT_GE(reported.ambiguous_scans, 35);
   EXPECT_EQ(reported.prior_decided_scans, 0);
   EXPECT_GT(reported.worst_x_jump, 0.3);
   EXPECT_LT(reported.min_edge_x_variance, 0.002);
   tp.ambiguity_factor = 0;
-  const WeakRun off = driveAlongX(test::corridorWorld(), tp, 35, scans_choose);
+  const WeakRun off = driveAlongX(test::corridorWorld(), tp, 35);
   EXPECT_LT(off.min_edge_x_variance, 0.002);
 }
 
@@ -465,9 +461,8 @@ TEST(LocalTracker, ASingleWallIsWeakAlongItself)
   // Without the unobservable rule (nor the prediction's choice between two matches) the
   // searches slide the scans along the wall by metres.
   tp.unobservable_min_rays = 0;
-  correlative::CorrelativeParams scans_choose;
-  scans_choose.prediction_decides_share = 0;
-  const WeakRun slid = driveAlongX(wall, tp, -1, scans_choose);
+  tp.prediction_decides_share = 0;
+  const WeakRun slid = driveAlongX(wall, tp, -1);
   EXPECT_EQ(slid.prior_decided_scans, 0) << "weak directions only reported";
   EXPECT_GT(slid.worst_x_jump, 0.3);
   EXPECT_GT(slid.worst_x_drift, 3.0);
@@ -490,9 +485,9 @@ TEST(LocalTracker, AScanThatMatchesNothingBecomesNoNode)
   const size_t odd = 40;
   auto run = [&](const TrackingParams& tp) {
     std::mt19937 rng(6);
-    correlative::CorrelativeParams cp;
-    cp.trust_prediction_after = 0;  // always search after a poor match, even on a proven prediction
-    LocalTracker tracker(tp, plicp::PlicpParams(), cp);
+    TrackingParams always = tp;
+    always.trust_prediction_after = 0;  // always search after a poor match, even on a proven prediction
+    LocalTracker tracker(always, plicp::PlicpParams());
     std::vector<TrackingStep> steps;
     for (size_t k = 0; k < path.size(); k++)
     {

@@ -39,7 +39,32 @@ const common::ParamTable<TrackingParams>& TrackingParams::table()
           .integer("unmatched_scans_skipped", &P::unmatched_scans_skipped, "", common::atLeast(0),
                    "an unmatched scan is no node while at most this many in a row were unmatched (0: always a node)")
           .flag("search_first_match", &P::search_first_match,
-                "the first match of a run without odometry is found by the search before any PLICP match");
+                "the first match of a run without odometry is found by the search before any PLICP match")
+          .real("trigger_correction_xy", &P::trigger_correction_xy, "m", common::atLeast(0),
+                "search if the first match moved the prediction more than this...")
+          .angle("trigger_correction_theta_DEG", &P::trigger_correction_theta, common::atLeast(0),
+                 "...or turned it more than this...")
+          .real("trigger_inlier_fraction", &P::trigger_inlier_fraction, "", common::between(0, 1),
+                "...or kept fewer than this fraction of the points within 3 range_sigma of the keyframe")
+          .integer("trust_prediction_after", &P::trust_prediction_after, "", common::atLeast(0),
+                   "...unless it stayed on a prediction the last this many scans confirmed (0: always search)")
+          .integer("submap_keyframes", &P::submap_keyframes, "", common::atLeast(1),
+                   "the search's score grid holds the points of the last this many keyframes")
+          .real("min_score_gain", &P::min_score_gain, "", common::atLeast(0),
+                "the searched match replaces the first only with an objective this much higher")
+          .real("common_points_fraction", &P::common_points_fraction, "", common::between(0, 1),
+                "compare the two matches on the points that can tell them apart when this fraction can (0: on all)")
+          .real("surface_goes_on_ratio", &P::surface_goes_on_ratio, "", common::atLeast(0),
+                "a point unseen at one pose tells nothing if at the other it lies on a surface going on past it")
+          .real("refine_correspondence_dist", &P::refine_correspondence_dist, "m", common::atLeast(0),
+                "PLICP radius of a second refinement when the first left the search's basin (0: none)")
+          .real("prediction_decides_share", &P::prediction_decides_share, "", common::between(0, 1),
+                "the prediction chooses between two matches where the searched one has under this share of information (0: never)")
+          .real("steady_prior_cost", &P::steady_prior_cost, "", common::atLeast(0),
+                "steady-motion prior: the search's score lost at one sigma from the prediction (0: none)")
+          .real("steady_sigma_min", &P::steady_sigma_min, "m", common::above(0), "least sigma of the steady-motion prior")
+          .real("steady_min_step", &P::steady_min_step, "m", common::atLeast(0),
+                "the steady-motion prior applies while the last 3 steps average at least this");
   return t;
 }
 

@@ -47,6 +47,37 @@ struct TrackingParams
    * best pose (from the guess only if the search finds nothing). */
   bool search_first_match = true;
 
+  // When a scan is searched: its first match against the keyframe...
+  double trigger_correction_xy = 0.1;  ///< [m] ...moved the prediction more than this,
+  double trigger_correction_theta = mrpt::DEG2RAD(2.0);  ///< [rad] or turned it more,
+  double trigger_inlier_fraction = 0.5;  ///< or kept fewer inliers than this fraction (or failed)...
+  int trust_prediction_after = 10;  ///< ...unless it stayed on a prediction this many scans confirmed (0: never)
+  int submap_keyframes = 5;  ///< the search's score grid holds the points of the last this many keyframes
+  // Which of the first and the searched match is kept.
+  double min_score_gain = 0.02;  ///< the searched match replaces the first only with an objective this much higher
+  /** the two matches are compared on the points that can tell them apart (correlative::
+   * commonScores), when at least this fraction of the points can; else on all the points
+   * (0: always on all) */
+  double common_points_fraction = 0.5;
+  /** a point in unseen space at one pose tells nothing against the other pose when there it
+   * lies on a surface that goes on: the cell as far beyond scores at least this fraction of
+   * its own */
+  double surface_goes_on_ratio = 0.25;
+  /** [m] when PLICP from the search's pose ends at a lower objective than that pose's, it is
+   * run again from it with this correspondence radius (0: never), the better one kept */
+  double refine_correspondence_dist = 0.3;
+  /** where the first and the searched match differ along a direction in which the searched
+   * one has under this share of its strongest information (informationShare), the scans cannot
+   * tell them apart: the one nearer the prediction along their difference is kept
+   * (predictionChoice; 0: never) */
+  double prediction_decides_share = 0.001;
+  // Steady-motion prior (steady_motion.h): while the last 3 steps average at least
+  // steady_min_step, the search also loses steady_prior_cost (d / sigma)^2 at a distance d from
+  // the prediction, sigma the spread of the recent steps (at least steady_sigma_min).
+  double steady_prior_cost = 0.002;  ///< score lost at one sigma (0: no such prior)
+  double steady_sigma_min = 0.3;     ///< [m]
+  double steady_min_step = 0.5;      ///< [m] per scan
+
   static const common::ParamTable<TrackingParams>& table();
 };
 

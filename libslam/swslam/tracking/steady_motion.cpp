@@ -18,7 +18,7 @@ void SteadyMotion::add(const mrpt::poses::CPose2D& motion, const std::optional<m
   if (motions_.size() > kHistory) motions_.pop_front();
 }
 
-double SteadyMotion::costPerM2(const correlative::CorrelativeParams& p) const
+double SteadyMotion::costPerM2(const TrackingParams& p) const
 {
   if (p.steady_prior_cost <= 0 || squared_errors_.size() < kMinChanges || motions_.size() < kStepWindow)
     return 0;

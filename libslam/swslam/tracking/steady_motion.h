@@ -4,7 +4,7 @@
 // search weighs a pose's distance from it by that spread (a Gaussian prior on top of the
 // linear cost_per_m), so a corridor's walls cannot pull a step back by a metre.
 
-#include <swslam/correlative/params.h>
+#include <swslam/tracking/params.h>
 
 #include <mrpt/poses/CPose2D.h>
 
@@ -34,7 +34,7 @@ class SteadyMotion
    * steady_prior_cost / sigma^2, sigma^2 = max(mean squared remembered prediction error,
    * steady_sigma_min^2), when at least kMinChanges errors are known and the last kStepWindow motions are steady_min_step long on average;
    * 0 otherwise (starting, stopping, turning on the spot, or steady_prior_cost 0). */
-  double costPerM2(const correlative::CorrelativeParams& p) const;
+  double costPerM2(const TrackingParams& p) const;
 
   /** Mean squared translation error of the remembered predictions [m^2], at least
    * `min_variance`; `unknown` while fewer than kMinChanges are known. The variance of the

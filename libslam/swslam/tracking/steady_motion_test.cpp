@@ -9,7 +9,7 @@ using mrpt::poses::CPose2D;
 
 TEST(SteadyMotion, NoCostUntilEnoughStepsAreKnown)
 {
-  correlative::CorrelativeParams p;
+  TrackingParams p;
   SteadyMotion s;
   for (int k = 0; k < 3; k++)
   {
@@ -22,7 +22,7 @@ TEST(SteadyMotion, NoCostUntilEnoughStepsAreKnown)
 
 TEST(SteadyMotion, IdenticalStepsGiveTheFloorSigma)
 {
-  correlative::CorrelativeParams p;
+  TrackingParams p;
   p.steady_prior_cost = 0.002;
   p.steady_sigma_min = 0.3;
   SteadyMotion s;
@@ -32,7 +32,7 @@ TEST(SteadyMotion, IdenticalStepsGiveTheFloorSigma)
 
 TEST(SteadyMotion, SigmaIsTheRmsChangeOfTheLastSixSteps)
 {
-  correlative::CorrelativeParams p;
+  TrackingParams p;
   p.steady_prior_cost = 0.01;
   p.steady_sigma_min = 0.01;
   p.steady_min_step = 0.5;
@@ -46,7 +46,7 @@ TEST(SteadyMotion, SigmaIsTheRmsChangeOfTheLastSixSteps)
 
 TEST(SteadyMotion, NoCostWhileSlowOrTurningOnTheSpot)
 {
-  correlative::CorrelativeParams p;
+  TrackingParams p;
   SteadyMotion s;
   for (int k = 0; k < 6; k++) s.add(CPose2D(1.0, 0, 0));
   ASSERT_GT(s.costPerM2(p), 0);
@@ -65,7 +65,7 @@ TEST(SteadyMotion, SigmaIsThatOfThePredictionsMade)
   // Steps of 1.0 and 2.0 m in turn (scans at irregular intervals), each predicted exactly at
   // constant velocity: no spread, the floor sigma; judged against the previous step instead,
   // they change by 1 m every time.
-  correlative::CorrelativeParams p;
+  TrackingParams p;
   p.steady_prior_cost = 0.01;
   p.steady_sigma_min = 0.1;
   SteadyMotion exact, per_step;
