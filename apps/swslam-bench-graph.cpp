@@ -10,7 +10,7 @@
 #include <swslam/bench/graph.h>
 #include <swslam/graph/io.h>
 #include <swslam/graph/synthetic.h>
-#include <swslam/system/config.h>
+#include <swslam/app/config.h>
 
 #include <cmath>
 #include <cstdio>
@@ -44,7 +44,7 @@ int main(int argc, char** argv)
       o.grid_half_extent = std::max(5, static_cast<int>(std::sqrt(o.nodes) / 4));
       const auto s = swslam::graph::makeGridWalkGraph(o);
       const swslam::graph::GraphOptimizerParams params =
-          config.isSet() ? swslam::system::loadSystemParams(config.getValue()).graph_optimizer
+          config.isSet() ? swslam::app::loadConfig(config.getValue()).system.graph_optimizer
                          : swslam::graph::GraphOptimizerParams();
       auto methods = swslam::bench::ourRobustMethods(params);
 #ifdef SWSLAM_WITH_CERES

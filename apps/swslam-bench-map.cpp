@@ -4,7 +4,7 @@
 #include <swslam/bench/map_builder.h>
 #include <swslam/common/tum_io.h>
 #include <swslam/map/outputs.h>
-#include <swslam/system/config.h>
+#include <swslam/app/config.h>
 
 
 #include <iostream>
@@ -22,7 +22,7 @@ int main(int argc, char** argv)
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
     swslam::map::MapParams params;
     if (!config.getValue().empty())
-      params = swslam::system::loadSystemParams(config.getValue()).map;
+      params = swslam::app::loadConfig(config.getValue()).system.map;
     const auto data = swslam::io::loadScansWithTruth(input.getValue(), swslam::common::readTum(gt.getValue()));
     swslam::map::MapBuilder builder(params);
     const auto f = swslam::bench::benchmarkMapBuilder(data, every.getValue(), builder);

@@ -1,7 +1,7 @@
 // Benchmark: PLICP vs MRPT's CICP (classic, LM) on scan pairs of a log with reference poses.
 #include "cli.h"
 #include <swslam/bench/matcher.h>
-#include <swslam/system/config.h>
+#include <swslam/app/config.h>
 
 
 #include <algorithm>
@@ -26,7 +26,7 @@ int main(int argc, char** argv)
     swslam::tracking::TrackingParams tracking;
     if (!config.getValue().empty())
     {
-      const auto loaded = swslam::system::loadSystemParams(config.getValue());
+      const auto loaded = swslam::app::loadConfig(config.getValue()).system;
       params = loaded.plicp;
       search = loaded.correlative;
       tracking = loaded.tracking;

@@ -4,7 +4,7 @@
 #include "cli.h"
 
 #include <swslam/app/default_config.h>
-#include <swslam/system/config.h>
+#include <swslam/app/config.h>
 
 #include <iostream>
 
@@ -27,11 +27,11 @@ int main(int argc, char** argv)
   {
     if (config.getValue().empty() && printed.size() == 1)
     {
-      std::cout << swslam::system::shippedConfigFile(printed.front());
+      std::cout << swslam::app::shippedConfigFile(printed.front());
       return 0;
     }
-    const auto params = swslam::system::loadSystemParams(swslam::app::configOrDefault(config.getValue()));
-    for (const Tier t : printed) std::cout << swslam::system::configText(params, t) << "\n";
+    const auto params = swslam::app::loadConfig(swslam::app::configOrDefault(config.getValue()));
+    for (const Tier t : printed) std::cout << swslam::app::configText(params, t) << "\n";
     return 0;
   }
   catch (const std::exception& e)

@@ -3,7 +3,7 @@
 #include "cli.h"
 #include <swslam/graph/io.h>
 #include <swslam/graph/sliding_window.h>
-#include <swslam/system/config.h>
+#include <swslam/app/config.h>
 
 
 #include <array>
@@ -38,7 +38,7 @@ int main(int argc, char** argv)
 
     swslam::graph::GraphOptimizerParams params;
     if (config.isSet())
-      params = swslam::system::loadSystemParams(config.getValue()).graph_optimizer;
+      params = swslam::app::loadConfig(config.getValue()).system.graph_optimizer;
     if (alpha.isSet())
     {
       // A string, so that "-inf" (strtod's spelling) is accepted; nothing else may follow.

@@ -2,6 +2,7 @@
 // 0.1 m for the offline map (see doc/system.md).
 #include "cli.h"
 
+#include <swslam/app/config.h>
 #include <swslam/app/default_config.h>
 #include <swslam/app/regen_map.h>
 #include <swslam/app/run_outputs.h>
@@ -26,7 +27,8 @@ int main(int argc, char** argv)
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
-    swslam::system::SystemParams params = swslam::system::loadSystemParams(swslam::app::configOrDefault(config.getValue()));
+    swslam::app::Config loaded = swslam::app::loadConfig(swslam::app::configOrDefault(config.getValue()));
+    swslam::system::SystemParams& params = loaded.system;
     if (resolution.isSet())
     {
       params.map.resolution = resolution.getValue();
@@ -60,7 +62,7 @@ int main(int argc, char** argv)
       std::cerr << "swslam-regen-map: " << stats_problem << "; the pictures mark no scan as placed by the prediction\n";
     swslam::app::RegenReport report;
     const auto grid = swslam::app::regenerateMap(run_data.graph, run_data.keyframes, input.getValue(),
-                                            params.map, params.carmen, &report);
+                                            params.map, loaded.carmen, &report);
     const auto problems = swslam::map::writeMapOutputs(output.getValue(), grid, params.map,
                                                        swslam::app::overlayOf(run_data), !no_render.getValue());
     for (const auto& p : problems) std::cerr << "swslam-regen-map: " << p.file << ": " << p.message << "\n";

@@ -4,7 +4,7 @@
 #include <swslam/eval/laser_optimum.h>
 #include <swslam/eval/relations_io.h>
 #include <swslam/eval/report.h>
-#include <swslam/system/config.h>
+#include <swslam/app/config.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -15,17 +15,18 @@ namespace swslam::app
 {
 namespace
 {
-system::SystemParams runConfig(const EvalOptions& o)
+Config runConfig(const EvalOptions& o)
 {
   if (o.config.empty())
     throw std::invalid_argument(o.command + " needs --config: the run's configuration says how the log is read"
                                 " and matched");
-  return system::loadSystemParams(o.config);
+  return loadConfig(o.config);
 }
 
 void laserOptimum(const EvalOptions& o, const std::vector<common::StampedPose>& estimate, std::ostream& out)
 {
-  const auto params = runConfig(o);
+  const Config config = runConfig(o);
+  const system::SystemParams& params = config.system;
   auto options = eval::laserOptimumOptions(params.tracking, params.loop_closure);
   if (o.radius) options.radius = *o.radius;
   if (!(options.radius > 0))
@@ -38,7 +39,7 @@ void laserOptimum(const EvalOptions& o, const std::vector<common::StampedPose>& 
       throw std::runtime_error("cannot write '" + o.output + "': no directory '" + out_dir.string() + "'");
   }
   out << eval::laserOptimumReport(o.reference, estimate, params.plicp, params.graph_optimizer, options, o.max_dt,
-                                  static_cast<size_t>(o.stride), params.tracking.min_range, params.carmen,
+                                  static_cast<size_t>(o.stride), params.tracking.min_range, config.carmen,
                                   o.sensor_label, o.output);
 }
 
@@ -49,7 +50,8 @@ void consistency(const EvalOptions& o, const std::vector<common::StampedPose>& e
   if (!(options.radius > 0)) throw std::invalid_argument("--radius must be > 0");
   if (o.min_gap < 0 || o.revisit_gap < 0)
     throw std::invalid_argument("--min-gap and --revisit-gap must be >= 0");
-  const auto params = runConfig(o);
+  const Config config = runConfig(o);
+  const system::SystemParams& params = config.system;
   std::vector<std::string> names{o.estimate};
   std::vector<std::vector<common::StampedPose>> trajectories{estimate};
   for (const auto& other : o.compare)
@@ -61,7 +63,7 @@ void consistency(const EvalOptions& o, const std::vector<common::StampedPose>& e
   options.revisit_gap = static_cast<size_t>(o.revisit_gap);
   options.min_segment = params.plicp.min_segment_length;
   out << eval::consistencyReport(o.reference, names, trajectories, options, o.max_dt,
-                                 static_cast<size_t>(o.stride), params.tracking.min_range, params.carmen,
+                                 static_cast<size_t>(o.stride), params.tracking.min_range, config.carmen,
                                  o.sensor_label);
 }
 }  // namespace

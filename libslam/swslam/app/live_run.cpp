@@ -1,5 +1,6 @@
 #include <swslam/app/live_run.h>
 
+#include <swslam/app/config.h>
 #include <swslam/app/default_config.h>
 #include <swslam/app/exit_codes.h>
 #include <swslam/app/output_folder.h>
@@ -39,16 +40,16 @@ std::string statusLine(const system::SystemStatus& s, const io::HokuyoLinkStats&
   return buf;
 }
 
-/** Writes every output of what the system holds now (it keeps running). */
-int save(const system::SlamSystem& slam, const system::SystemParams& params, const LiveRunOptions& opts,
-         double wall, std::ostream& err, bool final_save)
+/** Writes every output of what the system holds now (it keeps running); false if one failed. */
+bool save(const system::SlamSystem& slam, const system::SystemParams& params, const LiveRunOptions& opts,
+          double wall, std::ostream& err, bool final_save)
 {
   const system::RunResults results = slam.results();
   const std::string text = "# swslam-live\n" + system::formatRunSummary(summarizeRun(results, wall));
   const auto problems = writeRunOutputs(opts.output, results, slam.mapSnapshot(), params.map, text,
                                         opts.render && final_save);
   for (const auto& p : problems) err << "swslam-live: could not write " << p.file << ": " << p.message << "\n";
-  return problems.empty() ? 0 : kExitOutputError;
+  return problems.empty();
 }
 }  // namespace
 
@@ -76,7 +77,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     const auto sensor_file = opts.sensor_config.empty() ? nullptr : common::readIniFile(opts.sensor_config);
     // One file holding both, or swslam's config plus the sensor's own rawlog-grabber file
     // (whose other sections, e.g. [global], are rawlog-grabber's and not read here).
-    params = sensor_file ? system::loadSystemParams(*cfg) : system::loadSystemParams(*cfg, {opts.sensor_section});
+    params = (sensor_file ? loadConfig(*cfg) : loadConfig(*cfg, {opts.sensor_section})).system;
     const mrpt::config::CConfigFileBase& sensor_cfg = sensor_file ? *sensor_file : *cfg;
     // The folder before the sensor: a folder that cannot be written fails at once.
     folder.emplace(opts.output);
@@ -103,7 +104,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   const bool tty = opts.status && isTerminal(stderr);
   // On a terminal a message starts on a new line, below the status line it interrupts.
   SkipReporter skips(err, params.system.max_printed_warnings, tty ? "\nswslam-live: " : "swslam-live: ");
-  int code = 0;
+  RunOutcome outcome;  // a signal or the duration is how a live run ends: not an interruption
   while (slam.error().empty())
   {
     const auto now = steady_clock::now();
@@ -127,7 +128,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period))
     {
       if (recorder) recorder->flush();
-      code = std::max(code, save(slam, params, opts, elapsed, err, false));
+      outcome.outputs_failed |= !save(slam, params, opts, elapsed, err, false);
       last_save = now;
     }
     if (opts.status && now - last_status >= (tty ? milliseconds(250) : milliseconds(10000)))
@@ -151,17 +152,17 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   if (!slam.error().empty())
   {
     err << "swslam-live: " << slam.error() << "\n";
-    code = kExitModuleError;
+    outcome.module_failed = true;
   }
   const double wall = duration<double>(steady_clock::now() - t0).count();
-  code = std::max(code, save(slam, params, opts, wall, err, true));
+  outcome.outputs_failed |= !save(slam, params, opts, wall, err, true);
   out << "# swslam-live: " << ls.scans << " scans received and " << (recorder ? recorder->written() : 0)
       << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), "
       << ls.stalls << " stall(s), " << ls.driver_messages << " driver error message(s), "
       << ls.garbage_bytes << " byte(s) of data that was not SCIP 2.0\n";
   std::ifstream summary(opts.output + "/summary.md");
   out << summary.rdbuf() << "# outputs in " << opts.output << "/\n";
-  return code;
+  return exitCode(outcome);
 }
 
 }  // namespace swslam::app

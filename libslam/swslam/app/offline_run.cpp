@@ -1,5 +1,6 @@
 #include <swslam/app/offline_run.h>
 
+#include <swslam/app/config.h>
 #include <swslam/app/default_config.h>
 #include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
@@ -79,15 +80,33 @@ size_t feedAll(const OfflineRunOptions& opts, io::ScanSource& source, system::Sl
   }
   return read;
 }
-}  // namespace
-
-int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err)
+/** What a run reads, each opened and checked before any work: the configuration, the input,
+ * the ground truth, and the output folder, held for the run. */
+struct Opened
 {
-  StopSignal stop;
-  system::SystemParams params;
+  Config config;
   std::unique_ptr<io::ScanSource> source;
   std::vector<common::StampedPose> truth;
   std::optional<OutputFolder> folder;
+};
+
+/** What a run produced, with the system gone (its memory given back before the outputs are
+ * written: the off-screen render allocates its own). */
+struct Produced
+{
+  size_t read = 0;     ///< scans read from the input
+  size_t tracked = 0;  ///< scans the system tracked
+  size_t bad_stamps = 0;  ///< scans skipped for their timestamps
+  std::string error;   ///< a module's failure
+  double wall = 0;     ///< [s]
+  system::RunResults results;
+  mrpt::maps::COccupancyGridMap2D grid;
+};
+
+/** Phase 1: the configuration, input, ground truth and output folder; false (said on `err`)
+ * if one of them cannot be used. */
+bool open(const OfflineRunOptions& opts, Opened& in, std::ostream& err)
+{
   try
   {
     if (!(std::isfinite(opts.realtime_factor) && opts.realtime_factor >= 0))
@@ -95,132 +114,167 @@ int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& e
                                   std::to_string(opts.realtime_factor));
     const std::string config = configOrDefault(opts.config);
     if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
-    params = system::loadSystemParams(config);
-    if (!opts.ground_truth.empty()) truth = eval::readNonEmptyTum(opts.ground_truth);
-    source = io::throttleScans(
-        io::openScanSource(opts.input, io::ScanSourceOptions{opts.use_odometry, opts.sensor_label, opts.scan_topic, opts.odom_topic},
-                           params.carmen),
+    in.config = loadConfig(config);
+    if (!opts.ground_truth.empty()) in.truth = eval::readNonEmptyTum(opts.ground_truth);
+    in.source = io::throttleScans(
+        io::openScanSource(opts.input,
+                           io::ScanSourceOptions{opts.use_odometry, opts.sensor_label, opts.scan_topic, opts.odom_topic},
+                           in.config.carmen),
         opts.throttle_scans);
-    folder.emplace(opts.output);
-    if (folder->staleRemoved() > 0)
-      err << "swslam: removed " << folder->staleRemoved() << " temporary file(s) that a killed run left in "
+    in.folder.emplace(opts.output);
+    if (in.folder->staleRemoved() > 0)
+      err << "swslam: removed " << in.folder->staleRemoved() << " temporary file(s) that a killed run left in "
           << opts.output << "\n";
+    return true;
   }
   catch (const std::exception& e)
   {
     err << "swslam: " << e.what() << "\n";
-    return kExitUsage;
+    return false;
   }
+}
 
+/** Phase 2: the input through the system, then the final optimization and, unless a signal
+ * stopped the run (it can take long: every pair of nearby nodes), the final refinement. */
+Produced run(const OfflineRunOptions& opts, Opened& in, const StopSignal& stop, std::ostream& err, RunOutcome& outcome)
+{
+  Produced p;
   const auto t0 = std::chrono::steady_clock::now();
-  auto slam = std::make_unique<system::SlamSystem>(params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
+  auto slam = std::make_unique<system::SlamSystem>(
+      in.config.system, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
   ProgressBar bar(stderr, progressStyleFor(stderr, opts.progress), "swslam: ");
-  SkipReporter skips(err, params.system.max_printed_warnings, "swslam: ");
-  int code = kExitOk;
-  size_t read = 0;
+  SkipReporter skips(err, in.config.system.system.max_printed_warnings, "swslam: ");
   try
   {
-    read = feedAll(opts, *source, *slam, stop, bar, skips, t0);
+    p.read = feedAll(opts, *in.source, *slam, stop, bar, skips, t0);
   }
   catch (const InputStopped& e)
   {
     bar.done();
-    read = e.read;
-    err << "swslam: input stopped after " << read << " scans: " << e.what()
+    p.read = e.read;
+    err << "swslam: input stopped after " << p.read << " scans: " << e.what()
         << "\nswslam: writing the outputs of what was read\n";
-    code = kExitInputError;
+    outcome.input_failed = true;
   }
-  // Stopped by a signal, the run ends without the final refinement's matches (they can take
-  // long: every pair of nearby nodes); the final optimization still runs.
   slam->finish(!stop.requested());
   bar.done();
-  // A log whose clock is not in seconds (microseconds...) or does not run is not a run with a
-  // few skips.
-  const size_t bad_stamps = skips.count(system::FeedStatus::TimestampOutOfRange) +
-                            skips.count(system::FeedStatus::TimestampNotIncreasing);
-  if (2 * bad_stamps > read)
-  {
-    err << "swslam: " << bad_stamps << " of the " << read
-        << " scans read were skipped for their timestamps (see above): is the log's clock in seconds, and "
-           "increasing? (CARMEN logs: swslam-carmen2rawlog --repair-timestamps)\n";
-    if (code == kExitOk) code = kExitInputError;
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (stop.requested())
-  {
-    err << "swslam: stopped by signal " << stop.signal() << " after " << read
-        << " scans; writing the outputs (without the final refinement)\n";
-    code = kExitInterrupted;
-  }
-  if (!slam->error().empty())
-  {
-    err << "swslam: " << slam->error() << "\n";
-    if (code == kExitOk) code = kExitModuleError;
-  }
-  // A run that tracked no scan has nothing to write: say why instead of an empty map.
-  if (slam->status().scans == 0 && !stop.requested())
-  {
-    const std::string why = read == 0 ? source->noScanReason(opts.sensor_label)
-                                      : "none of its " + std::to_string(read) + " scans could be used (see above)";
-    err << "swslam: " << source->describe() << ": " << (why.empty() ? "no scan was tracked" : why)
-        << "; nothing written\n";
-    return code == kExitOk ? kExitInputError : code;
-  }
-
-  const system::RunResults results = slam->results();
-  // Scans without a valid ray (every range NaN, not positive or out of range) are tracked by
-  // the prediction and map nothing: a run of only such scans has no map to write.
-  const size_t blind = static_cast<size_t>(std::count_if(results.stats.begin(), results.stats.end(),
-                                                         [](const system::ScanStats& r) { return r.valid_rays == 0; }));
-  if (blind > 0 && blind == results.stats.size() && !stop.requested())
-  {
-    err << "swslam: " << source->describe() << ": none of its " << blind
-        << " scans tracked had a valid ray (every range NaN, not positive or beyond the sensor's range): nothing "
-           "to map; nothing written\n";
-    return code == kExitOk ? kExitInputError : code;
-  }
-  if (blind > 0)
-    err << "swslam: " << blind << " of the " << results.stats.size()
-        << " scans tracked had no valid ray; the prediction placed them and they mapped nothing\n";
-  const mrpt::maps::COccupancyGridMap2D grid = slam->mapSnapshot();
-  // The modules' memory is not needed for writing: give it back to the system before the
-  // off-screen render allocates its own (this keeps the run's peak memory down).
+  p.bad_stamps =
+      skips.count(system::FeedStatus::TimestampOutOfRange) + skips.count(system::FeedStatus::TimestampNotIncreasing);
+  p.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  p.error = slam->error();
+  p.tracked = slam->status().scans;
+  p.results = slam->results();
+  p.grid = slam->mapSnapshot();
   slam.reset();
   malloc_trim(0);
+  return p;
+}
+
+/** Phase 3: what the run's outcome says, on `err`; false if there is nothing to write. */
+bool diagnose(const OfflineRunOptions& opts, const Opened& in, const Produced& p, const StopSignal& stop,
+              std::ostream& err, RunOutcome& outcome)
+{
+  // A log whose clock is not in seconds (microseconds...) or does not run is not a run with a
+  // few skips.
+  if (2 * p.bad_stamps > p.read)
+  {
+    err << "swslam: " << p.bad_stamps << " of the " << p.read
+        << " scans read were skipped for their timestamps (see above): is the log's clock in seconds, and "
+           "increasing? (CARMEN logs: swslam-carmen2rawlog --repair-timestamps)\n";
+    outcome.input_failed = true;
+  }
+  if (stop.requested())
+  {
+    err << "swslam: stopped by signal " << stop.signal() << " after " << p.read
+        << " scans; writing the outputs (without the final refinement)\n";
+    outcome.interrupted = true;
+  }
+  if (!p.error.empty())
+  {
+    err << "swslam: " << p.error << "\n";
+    outcome.module_failed = true;
+  }
+  // A run that tracked no scan has nothing to write: say why instead of an empty map.
+  if (p.tracked == 0 && !stop.requested())
+  {
+    const std::string why = p.read == 0 ? in.source->noScanReason(opts.sensor_label)
+                                        : "none of its " + std::to_string(p.read) + " scans could be used (see above)";
+    err << "swslam: " << in.source->describe() << ": " << (why.empty() ? "no scan was tracked" : why)
+        << "; nothing written\n";
+    outcome.nothing_to_map = true;
+    return false;
+  }
+  // Scans without a valid ray (every range NaN, not positive or out of range) are tracked by
+  // the prediction and map nothing: a run of only such scans has no map to write.
+  const auto& stats = p.results.stats;
+  const size_t blind = static_cast<size_t>(
+      std::count_if(stats.begin(), stats.end(), [](const system::ScanStats& r) { return r.valid_rays == 0; }));
+  if (blind > 0 && blind == stats.size() && !stop.requested())
+  {
+    err << "swslam: " << in.source->describe() << ": none of its " << blind
+        << " scans tracked had a valid ray (every range NaN, not positive or beyond the sensor's range): nothing "
+           "to map; nothing written\n";
+    outcome.nothing_to_map = true;
+    return false;
+  }
+  if (blind > 0)
+    err << "swslam: " << blind << " of the " << stats.size()
+        << " scans tracked had no valid ray; the prediction placed them and they mapped nothing\n";
+  return true;
+}
+
+/** Phase 4: the summary (Table I, with ATE and RPE against the ground truth) and every output,
+ * replacing the folder's previous run as one. */
+void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::ostream& out, std::ostream& err,
+           RunOutcome& outcome)
+{
   system::RunSummary summary;
   try
   {
-    summary = summarizeRun(results, wall, truth.empty() ? nullptr : &truth);
+    summary = summarizeRun(p.results, p.wall, in.truth.empty() ? nullptr : &in.truth);
   }
   catch (const std::exception& e)
   {
     err << "swslam: ground truth: " << e.what() << "; the outputs are written without ATE and RPE\n";
-    summary = summarizeRun(results, wall);
-    if (code == kExitOk) code = kExitInputError;
+    summary = summarizeRun(p.results, p.wall);
+    outcome.truth_unusable = true;
   }
-  std::string text = "# swslam on " + source->describe() + " (" +
-                     (opts.deterministic ? "deterministic" : "threaded") + ")\n" + system::formatRunSummary(summary);
+  const std::string text = "# swslam on " + in.source->describe() + " (" +
+                           (opts.deterministic ? "deterministic" : "threaded") + ")\n" +
+                           system::formatRunSummary(summary);
   OutputFolder::Replaced written;
   try
   {
-    written = folder->replaceRun(runOutputFiles(), [&](const std::string& dir) {
-      return writeRunOutputs(dir, results, grid, params.map, text, opts.render);
+    written = in.folder->replaceRun(runOutputFiles(), [&](const std::string& dir) {
+      return writeRunOutputs(dir, p.results, p.grid, in.config.system.map, text, opts.render);
     });
   }
   catch (const std::exception& e)
   {
     err << "swslam: " << e.what() << "\n";
-    return kExitOutputError;
+    outcome.outputs_lost = true;
+    return;
   }
-  for (const map::OutputProblem& p : written.problems)
-    err << "swslam: could not write " << p.file << ": " << p.message << "\n";
+  for (const map::OutputProblem& problem : written.problems)
+    err << "swslam: could not write " << problem.file << ": " << problem.message << "\n";
   if (written.kept_previous)
     err << "swslam: the previous run's outputs in " << opts.output << " are kept; what this run wrote is in "
         << (std::filesystem::path(opts.output) / OutputFolder::kUnfinished).string() << "/\n";
-  if (!written.problems.empty() && code == kExitOk) code = kExitOutputError;
+  outcome.outputs_failed = !written.problems.empty();
   out << text << "# outputs in " << opts.output << "/ (map.png, " << (opts.render ? "render.png, " : "")
       << "trajectory.tum, stats.csv, summary.md)\n";
-  return code;
+}
+}  // namespace
+
+int runOffline(const OfflineRunOptions& opts, std::ostream& out, std::ostream& err)
+{
+  StopSignal stop;
+  Opened in;
+  if (!open(opts, in, err)) return kExitUsage;
+  RunOutcome outcome;
+  const Produced produced = run(opts, in, stop, err, outcome);
+  if (diagnose(opts, in, produced, stop, err, outcome)) write(opts, in, produced, out, err, outcome);
+  return exitCode(outcome);
 }
 
 }  // namespace swslam::app

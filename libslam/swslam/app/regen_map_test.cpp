@@ -18,7 +18,7 @@ TEST(RegenMap, RebuildsTheRunsMapAtAFinerResolution)
   const std::string log = std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog";
   const system::SystemParams params = system::loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   system::SlamSystem slam(params, system::RunMode::Deterministic);
-  auto src = io::openScanSource(log, io::ScanSourceOptions{}, params.carmen);
+  auto src = io::openScanSource(log, io::ScanSourceOptions{}, io::CarmenParams());
   sensor::ScanInput in;
   for (int i = 0; i < 600 && src->next(in); i++) ASSERT_TRUE(slam.feed(in).ok());
   slam.finish();
@@ -28,26 +28,26 @@ TEST(RegenMap, RebuildsTheRunsMapAtAFinerResolution)
   // Same resolution: every node inserted at its final pose; the online map holds nodes at
   // poses within the re-insertion threshold of those, so the two agree almost everywhere.
   RegenReport report;
-  const auto same = regenerateMap(run.graph, run.keyframes, log, params.map, params.carmen, &report);
+  const auto same = regenerateMap(run.graph, run.keyframes, log, params.map, io::CarmenParams(), &report);
   EXPECT_EQ(report.inserted, run.graph.nodeCount());
   const double occ = map::countOccupied(online, params.map.occupied_thresh);
   EXPECT_NEAR(map::countOccupied(same, params.map.occupied_thresh), occ, 0.1 * occ);
 
   map::MapParams fine = params.map;
   fine.resolution = 0.1;
-  const auto offline = regenerateMap(run.graph, run.keyframes, log, fine, params.carmen);
+  const auto offline = regenerateMap(run.graph, run.keyframes, log, fine, io::CarmenParams());
   EXPECT_NEAR(offline.getResolution(), 0.1, 1e-6);
   EXPECT_GT(map::countOccupied(offline, fine.occupied_thresh), 1.5 * occ);
 
   // Keyframes of another run: an error naming the problem.
   auto wrong = run.keyframes;
   wrong.pop_back();
-  EXPECT_THROW(regenerateMap(run.graph, wrong, log, params.map, params.carmen), std::runtime_error);
+  EXPECT_THROW(regenerateMap(run.graph, wrong, log, params.map, io::CarmenParams()), std::runtime_error);
   wrong = run.keyframes;
   wrong.back().t += 0.0123;
   try
   {
-    regenerateMap(run.graph, wrong, log, params.map, params.carmen);
+    regenerateMap(run.graph, wrong, log, params.map, io::CarmenParams());
     FAIL() << "no error";
   }
   catch (const std::runtime_error& e)

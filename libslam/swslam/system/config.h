@@ -1,10 +1,10 @@
 #pragma once
-// The parameters of every module, loaded from one .ini file (config/default.ini): one
-// section per module, strictly (unknown sections and keys are errors naming them).
+// The parameters of the system's modules, one .ini section each, loaded strictly (unknown
+// sections and keys are errors naming them). A program's whole file (app/config.h) also
+// holds the input's sections.
 
 #include <swslam/correlative/params.h>
 #include <swslam/graph/optimizer_params.h>
-#include <swslam/io/carmen_params.h>
 #include <swslam/loop/final_refinement_params.h>
 #include <swslam/loop/params.h>
 #include <swslam/map/params.h>
@@ -24,7 +24,6 @@ struct SystemParams
   plicp::PlicpParams plicp;    ///< [plicp]
   tracking::TrackingParams tracking;  ///< [tracking]
   correlative::CorrelativeParams correlative;  ///< [correlative]
-  io::CarmenParams carmen;  ///< [carmen]
   graph::GraphOptimizerParams graph_optimizer;  ///< [graph_optimizer]
   loop::LoopClosureParams loop_closure;  ///< [loop_closure]
   loop::FinalRefinementParams final_refinement;  ///< [final_refinement]
@@ -39,7 +38,6 @@ struct SystemParams
     visit(plicp::PlicpParams::table(), p.plicp);
     visit(tracking::TrackingParams::table(), p.tracking);
     visit(correlative::CorrelativeParams::table(), p.correlative);
-    visit(io::CarmenParams::table(), p.carmen);
     visit(graph::GraphOptimizerParams::table(), p.graph_optimizer);
     visit(loop::LoopClosureParams::table(), p.loop_closure);
     visit(loop::FinalRefinementParams::table(), p.final_refinement);
@@ -67,13 +65,5 @@ SystemParams loadSystemParams(const std::string& ini_path);
 
 /** Writes every section with its current values. */
 void saveSystemParams(const SystemParams& params, mrpt::config::CConfigFileBase& cfg);
-
-/** Every section's keys of one tier, each with its unit, one line of doc and its value in
- * `params`. */
-std::string configText(const SystemParams& params, common::Tier tier);
-
-/** The file config/default.ini (Tier::User) or config/expert.ini (Tier::Expert) as shipped:
- * a header, then configText() of the defaults. */
-std::string shippedConfigFile(common::Tier tier);
 
 }  // namespace swslam::system
