@@ -51,20 +51,32 @@ bool save(const system::SlamSystem& slam, const system::SystemParams& params, co
   for (const auto& p : problems) err << "swslam-live: could not write " << p.file << ": " << p.message << "\n";
   return problems.empty();
 }
-}  // namespace
-
-int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
+/** What a live run holds: its configuration, the sensor, the recording and the output folder. */
+struct Opened
 {
-  StopSignal stop;
-  std::signal(SIGPIPE, SIG_IGN);  // the driver writes to sockets the sensor may have closed
   system::SystemParams params;
   std::unique_ptr<io::HokuyoLink> link;
   std::unique_ptr<io::RawlogRecorder> recorder;
   std::optional<OutputFolder> folder;
-  steady_clock::time_point t0;  // the run's start, once connected to the system
-  const auto over = [&](steady_clock::time_point now) {
-    return stop.requested() || (opts.duration > 0 && duration<double>(now - t0).count() >= opts.duration);
-  };
+};
+
+/** When the run is over: a signal, or the duration since t0. */
+struct Deadline
+{
+  const StopSignal& stop;
+  double duration;  ///< [s] 0: none
+  steady_clock::time_point t0 = steady_clock::now();
+  bool over(steady_clock::time_point now) const
+  {
+    return stop.requested() || (duration > 0 && std::chrono::duration<double>(now - t0).count() >= duration);
+  }
+};
+
+/** Phase 1: the options, the configuration, the output folder (before the sensor: one that
+ * cannot be written fails at once), the sensor and the recording; false (said on `err`) if
+ * one of them cannot be used. */
+bool open(const LiveRunOptions& opts, const Deadline& deadline, Opened& in, std::ostream& err)
+{
   try
   {
     // Checked before the stall timeout becomes whole milliseconds (a cast of a huge or NaN value).
@@ -77,64 +89,68 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     const auto sensor_file = opts.sensor_config.empty() ? nullptr : common::readIniFile(opts.sensor_config);
     // One file holding both, or swslam's config plus the sensor's own rawlog-grabber file
     // (whose other sections, e.g. [global], are rawlog-grabber's and not read here).
-    params = (sensor_file ? loadConfig(*cfg) : loadConfig(*cfg, {opts.sensor_section})).system;
+    in.params = (sensor_file ? loadConfig(*cfg) : loadConfig(*cfg, {opts.sensor_section})).system;
     const mrpt::config::CConfigFileBase& sensor_cfg = sensor_file ? *sensor_file : *cfg;
-    // The folder before the sensor: a folder that cannot be written fails at once.
-    folder.emplace(opts.output);
+    in.folder.emplace(opts.output);
     io::HokuyoLinkOptions lo;
     lo.stall_timeout = milliseconds(static_cast<long>(1000 * opts.stall_timeout));
-    lo.stop = [&over] { return over(steady_clock::now()); };  // a poll stuck in garbage returns
-    link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
-                                        [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
+    lo.stop = [&deadline] { return deadline.over(steady_clock::now()); };  // a poll stuck in garbage returns
+    in.link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
+                                               [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
     // The recording replaces a previous one from here on, so do the other outputs; a run that
     // failed before (a bad sensor section) leaves them as they were.
-    folder->clearPreviousRun(runOutputFiles());
-    recorder = std::make_unique<io::RawlogRecorder>(
+    in.folder->clearPreviousRun(runOutputFiles());
+    in.recorder = std::make_unique<io::RawlogRecorder>(
         opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
+    return true;
   }
   catch (const std::exception& e)
   {
     err << "swslam-live: " << e.what() << "\n";
-    return kExitUsage;
+    return false;
   }
+}
 
-  system::SlamSystem slam(params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
-  t0 = steady_clock::now();
-  auto last_save = t0, last_status = t0;
+/** Phase 2: the sensor's scans recorded and fed to the system until the deadline or a failed
+ * module, the outputs saved every save_period and a status line drawn; then the sensor let go
+ * (it stops sending while the run finishes) and the system finished. */
+void run(const LiveRunOptions& opts, const Deadline& deadline, Opened& in, system::SlamSystem& slam,
+         std::ostream& err, RunOutcome& outcome)
+{
+  auto last_save = deadline.t0, last_status = deadline.t0;
   const bool tty = opts.status && isTerminal(stderr);
   // On a terminal a message starts on a new line, below the status line it interrupts.
-  SkipReporter skips(err, params.system.max_printed_warnings, tty ? "\nswslam-live: " : "swslam-live: ");
-  RunOutcome outcome;  // a signal or the duration is how a live run ends: not an interruption
+  SkipReporter skips(err, in.params.system.max_printed_warnings, tty ? "\nswslam-live: " : "swslam-live: ");
   while (slam.error().empty())
   {
     const auto now = steady_clock::now();
-    const double elapsed = duration<double>(now - t0).count();
-    if (over(now)) break;
-    if (auto scan = link->poll())
+    const double elapsed = duration<double>(now - deadline.t0).count();
+    if (deadline.over(now)) break;
+    if (auto scan = in.link->poll())
     {
       try
       {
-        recorder->write(*scan);
+        in.recorder->write(*scan);
       }
       catch (const std::exception& e)
       {
         err << "swslam-live: " << e.what() << "; mapping goes on without recording\n";
-        recorder.reset();
+        in.recorder.reset();
       }
       const system::FeedResult r = slam.feed({scan, std::nullopt});
       if (r.status != system::FeedStatus::Stopped && !r.message.empty())
-        skips.report(r.status, link->stats().scans - 1, r.message);
+        skips.report(r.status, in.link->stats().scans - 1, r.message);
     }
     if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period))
     {
-      if (recorder) recorder->flush();
-      outcome.outputs_failed |= !save(slam, params, opts, elapsed, err, false);
+      if (in.recorder) in.recorder->flush();
+      outcome.outputs_failed |= !save(slam, in.params, opts, elapsed, err, false);
       last_save = now;
     }
     if (opts.status && now - last_status >= (tty ? milliseconds(250) : milliseconds(10000)))
     {
       const system::SystemStatus s = slam.status();
-      const std::string line = statusLine(s, link->stats(), s.scans / std::max(elapsed, 1e-3));
+      const std::string line = statusLine(s, in.link->stats(), s.scans / std::max(elapsed, 1e-3));
       if (tty)
         std::fprintf(stderr, "\r%s\033[K", line.c_str());
       else
@@ -143,23 +159,37 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
     }
   }
   if (tty) std::fprintf(stderr, "\n");
-  if (stop.requested()) err << "swslam-live: stopped by signal " << stop.signal() << "; writing the outputs\n";
-  if (recorder) recorder->flush();
+  if (deadline.stop.requested()) err << "swslam-live: stopped by signal " << deadline.stop.signal() << "; writing the outputs\n";
+  if (in.recorder) in.recorder->flush();
+}
+}  // namespace
+
+int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
+{
+  StopSignal stop;
+  std::signal(SIGPIPE, SIG_IGN);  // the driver writes to sockets the sensor may have closed
+  Deadline deadline{stop, opts.duration};
+  Opened in;
+  if (!open(opts, deadline, in, err)) return kExitUsage;
+  system::SlamSystem slam(in.params, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
+  deadline.t0 = steady_clock::now();
+  RunOutcome outcome;  // a signal or the duration is how a live run ends: not an interruption
+  run(opts, deadline, in, slam, err, outcome);
   // The sensor is let go first: it stops sending while the run finishes.
-  const io::HokuyoLinkStats ls = link->stats();
-  link.reset();
+  const io::HokuyoLinkStats ls = in.link->stats();
+  in.link.reset();
   slam.finish();
   if (!slam.error().empty())
   {
     err << "swslam-live: " << slam.error() << "\n";
     outcome.module_failed = true;
   }
-  const double wall = duration<double>(steady_clock::now() - t0).count();
-  outcome.outputs_failed |= !save(slam, params, opts, wall, err, true);
-  out << "# swslam-live: " << ls.scans << " scans received and " << (recorder ? recorder->written() : 0)
-      << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), "
-      << ls.stalls << " stall(s), " << ls.driver_messages << " driver error message(s), "
-      << ls.garbage_bytes << " byte(s) of data that was not SCIP 2.0\n";
+  outcome.outputs_failed |= !save(slam, in.params, opts, duration<double>(steady_clock::now() - deadline.t0).count(),
+                                  err, true);
+  out << "# swslam-live: " << ls.scans << " scans received and " << (in.recorder ? in.recorder->written() : 0)
+      << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), " << ls.stalls
+      << " stall(s), " << ls.driver_messages << " driver error message(s), " << ls.garbage_bytes
+      << " byte(s) of data that was not SCIP 2.0\n";
   std::ifstream summary(opts.output + "/summary.md");
   out << summary.rdbuf() << "# outputs in " << opts.output << "/\n";
   return exitCode(outcome);
