@@ -112,7 +112,7 @@ TEST(MapInsertion, OneNodeEqualsMrptInsertingIntoAnEmptyGrid)
   MapBuilder map(p);
   map.insert(7, obs, pose);
   mrpt::maps::COccupancyGridMap2D direct(-30, 30, -30, 30, static_cast<float>(p.resolution));
-  direct.insertionOptions = p.insertionOptions();
+  direct.insertionOptions = insertionOptions(p);
   ASSERT_TRUE(direct.insertObservation(sanitizedScan(obs, p), mrpt::poses::CPose3D(pose)));
   const auto mine = map.snapshot();
   size_t touched = 0;

@@ -33,18 +33,4 @@ const common::ParamTable<MapParams>& MapParams::table()
   return t;
 }
 
-mrpt::maps::COccupancyGridMap2D::TInsertionOptions MapParams::insertionOptions() const
-{
-  mrpt::maps::COccupancyGridMap2D::TInsertionOptions o;
-  o.maxDistanceInsertion = static_cast<float>(max_insertion_range);
-  o.maxOccupancyUpdateCertainty = static_cast<float>(prob_occupied);
-  // MRPT's cells hold the log-odds of being free: its "freeness certainty" is 1 - prop_free.
-  o.maxFreenessUpdateCertainty = static_cast<float>(1 - prob_free);
-  o.considerInvalidRangesAsFreeSpace = false;  // a ray without a return tells nothing
-  o.decimation = 1;
-  o.horizontalTolerance = static_cast<float>(horizontal_tolerance);
-  o.wideningBeamsWithDistance = false;  // plain Bresenham-like rays, as the paper
-  return o;
-}
-
 }  // namespace swslam::map

@@ -5,7 +5,6 @@
 
 #include <swslam/common/param_table.h>
 #include <mrpt/core/bits_math.h>
-#include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <string>
 
@@ -31,9 +30,6 @@ struct MapParams
 
   /** How far a node must move to be re-inserted (sec. IV.B). */
   geometry::MoveThreshold reinsertThreshold() const { return {reinsert_translation, reinsert_rotation}; }
-
-  /** MRPT's insertion options that implement eq. (15)-(16) with these values. */
-  mrpt::maps::COccupancyGridMap2D::TInsertionOptions insertionOptions() const;
 };
 
 }  // namespace swslam::map

@@ -11,6 +11,20 @@
 
 namespace swslam::map
 {
+mrpt::maps::COccupancyGridMap2D::TInsertionOptions insertionOptions(const MapParams& p)
+{
+  mrpt::maps::COccupancyGridMap2D::TInsertionOptions o;
+  o.maxDistanceInsertion = static_cast<float>(p.max_insertion_range);
+  o.maxOccupancyUpdateCertainty = static_cast<float>(p.prob_occupied);
+  // MRPT's cells hold the log-odds of being free: its "freeness certainty" is 1 - prop_free.
+  o.maxFreenessUpdateCertainty = static_cast<float>(1 - p.prob_free);
+  o.considerInvalidRangesAsFreeSpace = false;  // a ray without a return tells nothing
+  o.decimation = 1;
+  o.horizontalTolerance = static_cast<float>(p.horizontal_tolerance);
+  o.wideningBeamsWithDistance = false;  // plain Bresenham-like rays, as the paper
+  return o;
+}
+
 namespace
 {
 // MRPT grows a grid when a scan point comes within 15 cells of its border: stay clear.
@@ -84,7 +98,7 @@ ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& o
   scratch.setSize(static_cast<float>(box.x0 * res), static_cast<float>(box.x1 * res),
                   static_cast<float>(box.y0 * res), static_cast<float>(box.y1 * res),
                   static_cast<float>(res), 0.5f);
-  scratch.insertionOptions = params.insertionOptions();
+  scratch.insertionOptions = insertionOptions(params);
   if (!scratch.insertObservation(obs, mrpt::poses::CPose3D(vehicle_pose)))
     throw std::invalid_argument("map: MRPT refused to insert scan '" + obs.sensorLabel + "'");
   // The scratch grid is aligned on global cells; it cannot have grown, but read its origin back.

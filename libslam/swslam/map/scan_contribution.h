@@ -60,6 +60,9 @@ inline int cellOf(double v, double resolution)
   return static_cast<int>(std::floor(v / resolution));
 }
 
+/** MRPT's insertion options that implement eq. (15)-(16) with the map's parameters. */
+mrpt::maps::COccupancyGridMap2D::TInsertionOptions insertionOptions(const MapParams& p);
+
 /** Returns the copy of `obs` that computeContribution() inserts: every ray flagged valid but
  * not a positive finite range below the max range is marked invalid, and the geometry is
  * restated so that MRPT's grid insertion (which steps rays by aperture/N) traces each ray at
@@ -77,7 +80,7 @@ struct ContributionScratch
 
 /** Eq. (15)-(16) for one scan: inserts `obs` (already sanitized) seen from `vehicle_pose`
  * into an empty scratch grid with MRPT's own insertObservation (log-odds along Bresenham
- * rays, MapParams::insertionOptions()) and keeps the non-zero cells. Deterministic: the
+ * rays, insertionOptions()) and keeps the non-zero cells. Deterministic: the
  * same scan and pose always give the same deltas, whatever the map already holds and
  * whatever `scratch` held before. */
 ScanContribution computeContribution(const mrpt::obs::CObservation2DRangeScan& obs,
