@@ -84,8 +84,22 @@ std::string shortestText(double v)
 std::string degreesText(double radians)
 {
   if (std::isinf(radians)) return radians < 0 ? "-inf" : "inf";
-  const std::string text = shortestAccepted(mrpt::RAD2DEG(radians), [radians](double d) { return detail::deg2rad(d) == radians; });
-  return text.empty() ? shortestText(mrpt::RAD2DEG(radians)) : text;
+  // RAD2DEG does not invert DEG2RAD exactly: the degrees that give `radians` may lie a few
+  // ulps from RAD2DEG(radians). The shortest text of any of those that does is the one.
+  const auto accept = [radians](double d) { return detail::deg2rad(d) == radians; };
+  std::string best;
+  double below = mrpt::RAD2DEG(radians), above = below;
+  for (int ulps = 0; ulps <= 4; ulps++)
+  {
+    for (const double degrees : {below, above})
+    {
+      const std::string text = shortestAccepted(degrees, accept);
+      if (!text.empty() && (best.empty() || text.size() < best.size())) best = text;
+    }
+    below = std::nextafter(below, -INFINITY);
+    above = std::nextafter(above, INFINITY);
+  }
+  return best.empty() ? shortestText(mrpt::RAD2DEG(radians)) : best;
 }
 
 namespace detail

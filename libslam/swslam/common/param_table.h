@@ -12,6 +12,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -180,6 +181,31 @@ class ParamTable
     return *this;
   }
 
+  /** A key of free text (a sensor's label): any value, trimmed. */
+  ParamTable& text(std::string name, std::string P::*m, std::string doc, Tier tier = Tier::Expert)
+  {
+    detail::Row<P> row{std::move(name), "", std::move(doc), tier, {}, {}, "text", {}, {}, {}};
+    row.parse = [m](P& p, const std::string& v) {
+      p.*m = v;
+      return std::string();
+    };
+    row.number = [](const P&) { return std::optional<double>(); };
+    row.text = [m](const P& p) { return p.*m; };
+    rows_.push_back(std::move(row));
+    return *this;
+  }
+
+  /** A key of its own form: `parse` reads a value into the struct (returning what is wrong
+   * with it, empty if nothing), `format` writes it as `parse` reads it back. */
+  ParamTable& custom(std::string name, std::function<std::string(P&, const std::string&)> parse,
+                     std::function<std::string(const P&)> format, std::string doc, Tier tier = Tier::Expert)
+  {
+    detail::Row<P> row{std::move(name), "", std::move(doc), tier, {}, {}, "text", std::move(parse), {}, std::move(format)};
+    row.number = [](const P&) { return std::optional<double>(); };
+    rows_.push_back(std::move(row));
+    return *this;
+  }
+
   /** A rule between keys of the section: `what` says it when `ok` is false. */
   ParamTable& rule(std::function<bool(const P&)> ok, std::string what)
   {
@@ -190,25 +216,27 @@ class ParamTable
   const std::string& section() const { return section_; }
   const std::string& title() const { return title_; }
 
-  /** The section's values from `cfg` over `p` (absent keys keep their values), then check(). */
+  /** The section's values from `cfg` over `p` (absent keys keep their values), then check().
+   * Unknown keys are named first, then the keys' values in the table's order. */
   void load(const mrpt::config::CConfigFileBase& cfg, P& p) const
   {
     std::vector<std::string> present;
     cfg.getAllKeys(section_, present);
     for (const auto& padded : present)
-    {
-      const std::string key = detail::trimmed(padded);
-      const detail::Row<P>* row = find(key);
-      if (!row)
-        throw std::invalid_argument("config: unknown key '" + key + "' in section [" + section_ +
+      if (!find(detail::trimmed(padded)))
+        throw std::invalid_argument("config: unknown key '" + detail::trimmed(padded) + "' in section [" + section_ +
                                     "]; known keys: " + detail::joined(names()));
-      const std::string raw = cfg.read_string(section_, padded, "");
-      detail::checkNoInlineComment(section_, key, raw);
-      const std::string value = detail::trimmed(raw);
-      const std::string problem = row->parse(p, value);
-      if (!problem.empty())
-        throw std::invalid_argument("config: [" + section_ + "] " + key + " = '" + value + "' " + problem);
-    }
+    for (const auto& row : rows_)
+      for (const auto& padded : present)
+      {
+        if (!detail::sameName(row.name, detail::trimmed(padded))) continue;
+        const std::string raw = cfg.read_string(section_, padded, "");
+        detail::checkNoInlineComment(section_, row.name, raw);
+        const std::string value = detail::trimmed(raw);
+        const std::string problem = row.parse(p, value);
+        if (!problem.empty())
+          throw std::invalid_argument("config: [" + section_ + "] " + row.name + " = '" + value + "' " + problem);
+      }
     check(p);
   }
 
@@ -217,6 +245,18 @@ class ParamTable
     P p;
     load(cfg, p);
     return p;
+  }
+
+  /** For files whose every key is required (a simulator scenario): throws
+   * std::invalid_argument "missing section [s]" or "missing key [s] k" unless the section
+   * and every key but `optional` ones are in `cfg`. */
+  void requireAll(const mrpt::config::CConfigFileBase& cfg, const std::vector<std::string>& optional = {}) const
+  {
+    if (!cfg.sectionExists(section_)) throw std::invalid_argument("missing section [" + section_ + "]");
+    for (const auto& row : rows_)
+      if (!cfg.keyExists(section_, row.name) &&
+          std::find(optional.begin(), optional.end(), row.name) == optional.end())
+        throw std::invalid_argument("missing key [" + section_ + "] " + row.name);
   }
 
   /** Throws std::invalid_argument naming the first key out of its range or rule broken. */

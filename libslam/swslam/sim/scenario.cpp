@@ -1,12 +1,10 @@
 #include <swslam/sim/scenario.h>
 #include <swslam/sim/scenario_check.h>
 
-#include <swslam/common/config_keys.h>
-#include <swslam/common/param_table.h>
 #include <swslam/common/ini_file.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/core/bits_math.h>
+#include <mrpt/core/format.h>
 #include <mrpt/system/string_utils.h>
 
 #include <cmath>
@@ -16,194 +14,93 @@
 
 namespace swslam::sim
 {
+using common::anyNumber;
+using common::atLeast;
+
 namespace
 {
-using mrpt::config::CConfigFileBase;
-
-std::string where(const std::string& s, const std::string& key)
-{
-  return "[" + s + "] " + key;
-}
-
-// Strict readers: the key has been checked present; a value that does not parse
-// entirely is an error naming the key (MRPT's own readers would read "abc" as 0).
-double readDouble(const CConfigFileBase& c, const std::string& s, const std::string& key)
-{
-  const std::string v = mrpt::system::trim(c.read_string(s, key, "", true));
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(x))
-    throw std::invalid_argument(where(s, key) + " = '" + v + "' is not a finite number");
-  return x;
-}
-
-unsigned readUnsigned(const CConfigFileBase& c, const std::string& s, const std::string& key)
-{
-  const double x = readDouble(c, s, key);
-  if (x < 0 || x != std::floor(x) || x > 1e9)
-    throw std::invalid_argument(where(s, key) + " must be a non-negative integer");
-  return static_cast<unsigned>(x);
-}
-
-bool readBool(const CConfigFileBase& c, const std::string& s, const std::string& key)
-{
-  const std::string v = mrpt::system::lowerCase(mrpt::system::trim(c.read_string(s, key, "", true)));
-  if (v == "true" || v == "1") return true;
-  if (v == "false" || v == "0") return false;
-  throw std::invalid_argument(where(s, key) + " = '" + v + "' is not true/false");
-}
-
-double readDegrees(const CConfigFileBase& c, const std::string& s, const std::string& key)
-{
-  return mrpt::DEG2RAD(readDouble(c, s, key));
-}
-
-/** Every key the struct writes must be in the file (no silent defaults), except the few
- * whose documented default is another key's value. */
-void checkAllKeysPresent(const CConfigFileBase& cfg, const std::string& section,
-                         const mrpt::config::CLoadableOptions& params)
-{
-  mrpt::config::CConfigFileMemory known;
-  params.saveToConfigFile(known, section);
-  std::vector<std::string> keys;
-  known.getAllKeys(section, keys);
-  for (const auto& key : keys)
-    if (!cfg.keyExists(section, key) && !(section == "world" && key == "noise_seed"))
-      throw std::invalid_argument("missing key " + where(section, key));
-}
-
-template <class Params>
-Params loadSection(const CConfigFileBase& cfg, const std::string& section)
-{
-  if (!cfg.sectionExists(section)) throw std::invalid_argument("missing section [" + section + "]");
-  common::checkKnownKeys(cfg, section, Params());  // first: a misspelled key is named as such
-  checkAllKeysPresent(cfg, section, Params());
-  return common::loadStrict<Params>(cfg, section);
-}
-
-/** Full precision, so that formatScenario() round-trips. */
-void put(CConfigFileBase& c, const std::string& s, const std::string& key, double v)
-{
-  c.write(s, key, mrpt::format("%.15g", v));
-}
-
-/** The plain-number keys of a parameter struct: key name and member. */
-template <class T>
-using NumberKeys = std::vector<std::pair<const char*, double T::*>>;
-
-template <class T>
-void loadNumbers(T& p, const NumberKeys<T>& keys, const CConfigFileBase& c, const std::string& s)
-{
-  for (const auto& [key, member] : keys) p.*member = readDouble(c, s, key);
-}
-
-template <class T>
-void saveNumbers(const T& p, const NumberKeys<T>& keys, CConfigFileBase& c, const std::string& s)
-{
-  for (const auto& [key, member] : keys) put(c, s, key, p.*member);
-}
-
-const NumberKeys<WorldParams> kWorldNumbers{
-    {"size_x", &WorldParams::size_x},
-    {"size_y", &WorldParams::size_y},
-    {"grid_cell", &WorldParams::grid_cell}};
-
-const NumberKeys<TerrainParams> kTerrainNumbers{
-    {"lake_center_x", &TerrainParams::lake_center_x},
-    {"lake_center_y", &TerrainParams::lake_center_y},
-    {"lake_radius", &TerrainParams::lake_radius},
-    {"lake_roughness", &TerrainParams::lake_roughness},
-    {"bank_pass_through", &TerrainParams::bank_pass_through},
-    {"island_center_x", &TerrainParams::island_center_x},
-    {"island_center_y", &TerrainParams::island_center_y},
-    {"island_radius", &TerrainParams::island_radius},
-    {"island_roughness", &TerrainParams::island_roughness},
-    {"rock_radius_min", &TerrainParams::rock_radius_min},
-    {"rock_radius_max", &TerrainParams::rock_radius_max}};
-
-const NumberKeys<VegetationParams> kVegetationNumbers{
-    {"land_band", &VegetationParams::land_band},
-    {"trunk_density", &VegetationParams::trunk_density},
-    {"density_variation", &VegetationParams::density_variation},
-    {"trunk_radius_min", &VegetationParams::trunk_radius_min},
-    {"trunk_radius_max", &VegetationParams::trunk_radius_max},
-    {"bush_density", &VegetationParams::bush_density},
-    {"bush_radius", &VegetationParams::bush_radius},
-    {"bush_pass_through", &VegetationParams::bush_pass_through},
-    {"reed_density", &VegetationParams::reed_density},
-    {"reed_pass_through", &VegetationParams::reed_pass_through},
-    {"path_clearance", &VegetationParams::path_clearance}};
-
-const NumberKeys<SensorParams> kSensorNumbers{
-    {"max_range", &SensorParams::max_range},
-    {"min_range", &SensorParams::min_range},
-    {"rate_hz", &SensorParams::rate},
-    {"range_noise_std", &SensorParams::range_noise_std},
-    {"dropout_prob", &SensorParams::dropout_prob},
-    {"pose_x", &SensorParams::pose_x},
-    {"pose_y", &SensorParams::pose_y},
-    {"pose_z", &SensorParams::pose_z}};
+/** A seed or a count: a whole number in [0, 1e9]. */
+const common::Range kCount = common::between(0, 1e9);
 }  // namespace
 
-void WorldParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
+const common::ParamTable<WorldParams>& WorldParams::table()
 {
-  seed = readUnsigned(c, s, "seed");
-  noise_seed = c.keyExists(s, "noise_seed") ? readUnsigned(c, s, "noise_seed") : seed;
-  loadNumbers(*this, kWorldNumbers, c, s);
-}
-void WorldParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
-{
-  c.write(s, "seed", seed);
-  c.write(s, "noise_seed", noise_seed);
-  saveNumbers(*this, kWorldNumbers, c, s);
-}
-
-void TerrainParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
-{
-  loadNumbers(*this, kTerrainNumbers, c, s);
-  rocks = readUnsigned(c, s, "rocks");
-}
-void TerrainParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
-{
-  saveNumbers(*this, kTerrainNumbers, c, s);
-  c.write(s, "rocks", rocks);
+  using P = WorldParams;
+  static const auto t = common::ParamTable<P>("world", "Extent of the world (centred on the origin) and the random seed.")
+                            .integer("seed", &P::seed, "", kCount, "seed of the world")
+                            .integer("noise_seed", &P::noise_seed, "", kCount, "seed of the sensor and odometry noise (default: seed)")
+                            .real("size_x", &P::size_x, "m", anyNumber(), "extent along x")
+                            .real("size_y", &P::size_y, "m", anyNumber(), "extent along y")
+                            .real("grid_cell", &P::grid_cell, "m", anyNumber(), "spatial index cell size");
+  return t;
 }
 
-void VegetationParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
+const common::ParamTable<TerrainParams>& TerrainParams::table()
 {
-  loadNumbers(*this, kVegetationNumbers, c, s);
-  bush_leaves = readUnsigned(c, s, "bush_leaves");
-  reed_stems = readUnsigned(c, s, "reed_stems");
-}
-void VegetationParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
-{
-  saveNumbers(*this, kVegetationNumbers, c, s);
-  c.write(s, "bush_leaves", bush_leaves);
-  c.write(s, "reed_stems", reed_stems);
+  using P = TerrainParams;
+  static const auto t =
+      common::ParamTable<P>("terrain", "A lake (water inside an irregular shore), an optional island, rocks.")
+          .real("lake_center_x", &P::lake_center_x, "m", anyNumber(), "lake centre")
+          .real("lake_center_y", &P::lake_center_y, "m", anyNumber(), "lake centre")
+          .real("lake_radius", &P::lake_radius, "m", anyNumber(), "lake radius (0: no water)")
+          .real("lake_roughness", &P::lake_roughness, "m", anyNumber(), "amplitude of the shore's irregularity")
+          .real("bank_pass_through", &P::bank_pass_through, "", anyNumber(),
+                "probability that a ray from the water passes over the low bank")
+          .real("island_center_x", &P::island_center_x, "m", anyNumber(), "island centre")
+          .real("island_center_y", &P::island_center_y, "m", anyNumber(), "island centre")
+          .real("island_radius", &P::island_radius, "m", anyNumber(), "island radius (0: no island)")
+          .real("island_roughness", &P::island_roughness, "m", anyNumber(), "amplitude of the island's irregularity")
+          .real("rock_radius_min", &P::rock_radius_min, "m", anyNumber(), "rock radius, least...")
+          .real("rock_radius_max", &P::rock_radius_max, "m", anyNumber(), "...and largest")
+          .integer("rocks", &P::rocks, "", kCount, "rocks scattered in the water");
+  return t;
 }
 
-void VehicleParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
+const common::ParamTable<VegetationParams>& VegetationParams::table()
 {
-  try
-  {
-    waypoints = parseWaypoints(c.read_string(s, "waypoints", "", true));
-  }
-  catch (const std::invalid_argument& e)
-  {
-    throw std::invalid_argument(where(s, "waypoints") + ": " + e.what());
-  }
-  closed = readBool(c, s, "closed");
-  speed = readDouble(c, s, "speed");
-  max_turn_rate = readDegrees(c, s, "max_turn_rate_DEG");
-  start_time = readDouble(c, s, "start_time");
+  using P = VegetationParams;
+  static const auto t =
+      common::ParamTable<P>("vegetation", "Trunks and bushes on land near the shore, reeds in the water along it.")
+          .real("land_band", &P::land_band, "m", anyNumber(), "vegetated land beyond the shore")
+          .real("trunk_density", &P::trunk_density, "", anyNumber(), "mean trunks per 100 m^2 of vegetated land")
+          .real("density_variation", &P::density_variation, "", anyNumber(), "0: uniform; 1: from clearings to twice the mean")
+          .real("trunk_radius_min", &P::trunk_radius_min, "m", anyNumber(), "trunk radius, least...")
+          .real("trunk_radius_max", &P::trunk_radius_max, "m", anyNumber(), "...and largest")
+          .real("bush_density", &P::bush_density, "", anyNumber(), "bushes per 100 m^2 of vegetated land")
+          .real("bush_radius", &P::bush_radius, "m", anyNumber(), "radius of a bush")
+          .real("bush_pass_through", &P::bush_pass_through, "", anyNumber(), "probability a ray goes through one leaf cluster")
+          .real("reed_density", &P::reed_density, "", anyNumber(), "reed clusters per 100 m of shore")
+          .real("reed_pass_through", &P::reed_pass_through, "", anyNumber(), "probability a ray goes through a reed cluster")
+          .real("path_clearance", &P::path_clearance, "m", anyNumber(), "no vegetation or rock closer to the path")
+          .integer("bush_leaves", &P::bush_leaves, "", kCount, "leaf clusters per bush")
+          .integer("reed_stems", &P::reed_stems, "", kCount, "stems per reed cluster");
+  return t;
 }
-void VehicleParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
+
+const common::ParamTable<VehicleParams>& VehicleParams::table()
 {
-  c.write(s, "waypoints", formatWaypoints(waypoints));
-  c.write(s, "closed", closed);
-  put(c, s, "speed", speed);
-  put(c, s, "max_turn_rate_DEG", mrpt::RAD2DEG(max_turn_rate));
-  put(c, s, "start_time", start_time);
+  using P = VehicleParams;
+  static const auto t =
+      common::ParamTable<P>("vehicle", "A smooth path through waypoints at constant speed.")
+          .custom(
+              "waypoints",
+              [](P& p, const std::string& v) {
+                try
+                {
+                  p.waypoints = parseWaypoints(v);
+                  return std::string();
+                }
+                catch (const std::invalid_argument& e)
+                {
+                  return std::string(": ") + e.what();
+                }
+              },
+              [](const P& p) { return formatWaypoints(p.waypoints); }, "'x y, x y, ...' [m]")
+          .flag("closed", &P::closed, "the path returns to its first waypoint")
+          .real("speed", &P::speed, "m/s", anyNumber(), "vehicle speed")
+          .angle("max_turn_rate_DEG", &P::max_turn_rate, anyNumber(), "largest turn rate [deg/s]")
+          .real("start_time", &P::start_time, "s", anyNumber(), "timestamp of the first scan (UNIX time)");
+  return t;
 }
 
 size_t SensorParams::rays() const
@@ -211,37 +108,52 @@ size_t SensorParams::rays() const
   return static_cast<size_t>(std::llround(fov / resolution)) + 1;
 }
 
-void SensorParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
+const common::ParamTable<SensorParams>& SensorParams::table()
 {
-  label = mrpt::system::trim(c.read_string(s, "label", "", true));
-  fov = readDegrees(c, s, "fov_DEG");
-  resolution = readDegrees(c, s, "resolution_DEG");
-  pose_yaw = readDegrees(c, s, "pose_yaw_DEG");
-  loadNumbers(*this, kSensorNumbers, c, s);
-}
-void SensorParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
-{
-  c.write(s, "label", label);
-  put(c, s, "fov_DEG", mrpt::RAD2DEG(fov));
-  put(c, s, "resolution_DEG", mrpt::RAD2DEG(resolution));
-  put(c, s, "pose_yaw_DEG", mrpt::RAD2DEG(pose_yaw));
-  saveNumbers(*this, kSensorNumbers, c, s);
+  using P = SensorParams;
+  static const auto t =
+      common::ParamTable<P>("sensor", "A 2D LiDAR.")
+          .text("label", &P::label, "sensor label of the observations")
+          .angle("fov_DEG", &P::fov, anyNumber(), "field of view")
+          .angle("resolution_DEG", &P::resolution, anyNumber(), "angle between rays")
+          .angle("pose_yaw_DEG", &P::pose_yaw, anyNumber(), "mounting yaw on the vehicle")
+          .real("max_range", &P::max_range, "m", anyNumber(), "longest range")
+          .real("min_range", &P::min_range, "m", anyNumber(), "shortest range")
+          .real("rate_hz", &P::rate, "Hz", anyNumber(), "scans per second")
+          .real("range_noise_std", &P::range_noise_std, "m", anyNumber(), "Gaussian range noise")
+          .real("dropout_prob", &P::dropout_prob, "", anyNumber(), "probability a ray returns nothing")
+          .real("pose_x", &P::pose_x, "m", anyNumber(), "mounting on the vehicle")
+          .real("pose_y", &P::pose_y, "m", anyNumber(), "mounting on the vehicle")
+          .real("pose_z", &P::pose_z, "m", anyNumber(), "mounting on the vehicle");
+  return t;
 }
 
-void OdometryParams::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)
+const common::ParamTable<OdometryParams>& OdometryParams::table()
 {
-  enabled = readBool(c, s, "enabled");
-  speed_noise_std = readDouble(c, s, "speed_noise_std");
-  yaw_drift = readDegrees(c, s, "yaw_drift_DEG_per_s");
-  yaw_noise_std = readDegrees(c, s, "yaw_noise_std_DEG");
+  using P = OdometryParams;
+  static const auto t =
+      common::ParamTable<P>("odometry", "Optional noisy odometry observations, one per scan.")
+          .flag("enabled", &P::enabled, "write odometry observations")
+          .real("speed_noise_std", &P::speed_noise_std, "", anyNumber(), "relative std of each travelled increment")
+          .angle("yaw_drift_DEG_per_s", &P::yaw_drift, anyNumber(), "constant yaw-rate bias [deg/s]")
+          .angle("yaw_noise_std_DEG", &P::yaw_noise_std, anyNumber(), "std of each yaw increment");
+  return t;
 }
-void OdometryParams::saveToConfigFile(CConfigFileBase& c, const std::string& s) const
+
+namespace
 {
-  c.write(s, "enabled", enabled);
-  put(c, s, "speed_noise_std", speed_noise_std);
-  put(c, s, "yaw_drift_DEG_per_s", mrpt::RAD2DEG(yaw_drift));
-  put(c, s, "yaw_noise_std_DEG", mrpt::RAD2DEG(yaw_noise_std));
+/** Calls visit(table, parameters) for each section, in file order. */
+template <class S, class Visit>
+void forEachSection(S& sc, Visit visit)
+{
+  visit(WorldParams::table(), sc.world);
+  visit(TerrainParams::table(), sc.terrain);
+  visit(VegetationParams::table(), sc.vegetation);
+  visit(VehicleParams::table(), sc.vehicle);
+  visit(SensorParams::table(), sc.sensor);
+  visit(OdometryParams::table(), sc.odometry);
 }
+}  // namespace
 
 std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text)
 {
@@ -272,12 +184,7 @@ std::string formatWaypoints(const std::vector<Eigen::Vector2d>& pts)
 std::string formatScenario(const Scenario& sc)
 {
   mrpt::config::CConfigFileMemory c;
-  sc.world.saveToConfigFile(c, "world");
-  sc.terrain.saveToConfigFile(c, "terrain");
-  sc.vegetation.saveToConfigFile(c, "vegetation");
-  sc.vehicle.saveToConfigFile(c, "vehicle");
-  sc.sensor.saveToConfigFile(c, "sensor");
-  sc.odometry.saveToConfigFile(c, "odometry");
+  forEachSection(sc, [&](const auto& table, const auto& p) { table.save(p, c); });
   std::string text;
   c.getContent(text);
   return text;
@@ -294,12 +201,12 @@ Scenario loadScenario(const std::string& path)
     common::checkKnownSections(cfg, {"world", "terrain", "vegetation", "vehicle", "sensor", "odometry"});
     Scenario sc;
     sc.name = std::filesystem::path(path).stem().string();
-    sc.world = loadSection<WorldParams>(cfg, "world");
-    sc.terrain = loadSection<TerrainParams>(cfg, "terrain");
-    sc.vegetation = loadSection<VegetationParams>(cfg, "vegetation");
-    sc.vehicle = loadSection<VehicleParams>(cfg, "vehicle");
-    sc.sensor = loadSection<SensorParams>(cfg, "sensor");
-    sc.odometry = loadSection<OdometryParams>(cfg, "odometry");
+    // A misspelled key is named as such first, then a missing one.
+    forEachSection(sc, [&](const auto& table, auto& p) {
+      table.load(cfg, p);
+      table.requireAll(cfg, {"noise_seed"});
+    });
+    if (!cfg.keyExists("world", "noise_seed")) sc.world.noise_seed = sc.world.seed;
     validateScenario(sc);
     return sc;
   }

@@ -1,9 +1,12 @@
 #pragma once
 // A simulator scenario: the world, the vehicle's run and the sensors, one .ini section
-// per parameter struct. Every key is required and unknown keys are errors, so a
-// misspelled key never silently falls back to a default.
+// per parameter struct, each declared in its table (common/param_table.h). Every key is
+// required and unknown keys are errors, so a misspelled key never silently falls back to a
+// default.
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <swslam/common/param_table.h>
+
+#include <mrpt/core/bits_math.h>
 
 #include <Eigen/Core>
 #include <string>
@@ -12,7 +15,7 @@
 namespace swslam::sim
 {
 /** [world] Extent of the world (centered on the origin) and the random seed. */
-struct WorldParams : public mrpt::config::CLoadableOptions
+struct WorldParams
 {
   unsigned seed = 1;
   /** Seed of the sensor and odometry noise (ini key optional: defaults to `seed`), so that
@@ -21,13 +24,12 @@ struct WorldParams : public mrpt::config::CLoadableOptions
   double size_x = 200, size_y = 200;  ///< [m]
   double grid_cell = 2.0;             ///< spatial index cell size [m]
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<WorldParams>& table();
 };
 
 /** [terrain] A lake (water inside an irregular shore), an optional island, rocks.
  * lake_radius = 0 means no water at all (a forest for a ground vehicle). */
-struct TerrainParams : public mrpt::config::CLoadableOptions
+struct TerrainParams
 {
   double lake_center_x = 0, lake_center_y = 0, lake_radius = 90;
   double lake_roughness = 4;  ///< amplitude of the shore's irregularity [m]
@@ -40,13 +42,12 @@ struct TerrainParams : public mrpt::config::CLoadableOptions
   unsigned rocks = 5;         ///< rocks scattered in the water
   double rock_radius_min = 0.3, rock_radius_max = 1.2;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<TerrainParams>& table();
 };
 
 /** [vegetation] Trunks and bushes on the land near the shore (everywhere without
  * water), reeds in the water along the shore. Densities per 100 m^2 or per 100 m. */
-struct VegetationParams : public mrpt::config::CLoadableOptions
+struct VegetationParams
 {
   double land_band = 20;          ///< vegetated land beyond the shore [m]
   double trunk_density = 2;       ///< mean trunks per 100 m^2 of vegetated land
@@ -61,12 +62,11 @@ struct VegetationParams : public mrpt::config::CLoadableOptions
   double reed_pass_through = 0.4;
   double path_clearance = 2.0;    ///< no vegetation or rock closer to the path [m]
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<VegetationParams>& table();
 };
 
 /** [vehicle] A smooth path through waypoints at constant speed. */
-struct VehicleParams : public mrpt::config::CLoadableOptions
+struct VehicleParams
 {
   std::vector<Eigen::Vector2d> waypoints{{0, 0}, {10, 0}};
   bool closed = false;            ///< the path returns to its first waypoint
@@ -74,16 +74,15 @@ struct VehicleParams : public mrpt::config::CLoadableOptions
   double max_turn_rate = 0.5;     ///< [rad/s] (key max_turn_rate_DEG, in deg/s)
   double start_time = 1.7e9;      ///< timestamp of the first scan [s, UNIX time]
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<VehicleParams>& table();
 };
 
 /** [sensor] A 2D LiDAR (defaults: Hokuyo UTM-30LX-like, as in the paper). */
-struct SensorParams : public mrpt::config::CLoadableOptions
+struct SensorParams
 {
   std::string label = "LIDAR";
-  double fov = 270 * M_PI / 180;        ///< [rad] (key fov_DEG)
-  double resolution = 0.25 * M_PI / 180;  ///< [rad] (key resolution_DEG)
+  double fov = mrpt::DEG2RAD(270.0);    ///< [rad] (key fov_DEG)
+  double resolution = mrpt::DEG2RAD(0.25);  ///< [rad] (key resolution_DEG)
   double max_range = 60, min_range = 0.1;  ///< [m]
   double rate = 40;                     ///< scans per second [Hz]
   double range_noise_std = 0.03;        ///< Gaussian range noise [m]
@@ -93,20 +92,18 @@ struct SensorParams : public mrpt::config::CLoadableOptions
   /** Number of rays: fov / resolution + 1. */
   size_t rays() const;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<SensorParams>& table();
 };
 
 /** [odometry] Optional noisy odometry observations, one per scan. */
-struct OdometryParams : public mrpt::config::CLoadableOptions
+struct OdometryParams
 {
   bool enabled = true;
   double speed_noise_std = 0.02;  ///< relative std of each travelled increment
   double yaw_drift = 0;           ///< constant yaw-rate bias [rad/s] (key yaw_drift_DEG_per_s)
   double yaw_noise_std = 0;       ///< std of each yaw increment [rad] (key yaw_noise_std_DEG)
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  static const common::ParamTable<OdometryParams>& table();
 };
 
 struct Scenario
