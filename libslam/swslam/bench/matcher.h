@@ -34,13 +34,11 @@ struct MatcherRow
 };
 
 /** Runs every method (or only the one named `only`, if not empty) from each initial guess on
- * pairs (k, k + stride): `plicp`, `plicp+search` (PLICP, then the correlative search of
- * tracking with `search_params` and PLICP from the search's pose when tracking would search:
- * correlative::searchNeeded(), the reference motion counting as a measured prediction and
- * identity as a guess, which `tracking.search_first_match` always searches; of the two
- * matches, what tracking keeps: correlative::afterSearch() with `tracking`'s fractions, an
- * unmatched pair failing with the guess as its pose, as the prediction carries such a scan),
- * `cicp-classic`, `cicp-lm`. Errors are measured on the vehicle's relative pose.
+ * pairs (k, k + stride): `plicp`, `plicp+search` (tracking's own matcher, tracking::ScanMatcher,
+ * with `search_params` and `tracking`, against the pair's first scan: the reference motion
+ * counts as a measured prediction and identity as a guess; an unmatched pair fails with the
+ * guess as its pose, as the prediction carries such a scan), `cicp-classic`, `cicp-lm`.
+ * Errors are measured on the vehicle's relative pose.
  * Throws std::invalid_argument for an unknown method name. */
 std::vector<MatcherRow> benchmarkMatchers(const io::ScansWithTruth& data, size_t stride,
                                           const plicp::PlicpParams& plicp_params,
@@ -68,7 +66,7 @@ std::string formatFloor(const PlicpFloor& floor);
  * reference index built, the match), the search's grid and pyramid built from the reference
  * scan, and the branch-and-bound search of the window around identity. Identity is a guess:
  * with `tracking.search_first_match` every pair is searched first and the PLICP match is the one
- * from the search's best pose (correlative::searchFirst()); else PLICP from identity comes first,
+ * from the search's best pose (tracking::searchFirst()); else PLICP from identity comes first,
  * and `searched` counts the pairs whose match says the guess was poor (the PLICP match from the
  * search's pose that follows is then not counted). The times are medians over the searched
  * pairs, and `total_us` the median of each pair's sum of the three. */

@@ -56,7 +56,7 @@ TEST(LocalTracker, FollowsAPathAndMakesKeyframesWithEdges)
     const CPose2D expected = (-path[0]) + path[k];  // the map frame is the first pose
     EXPECT_NEAR(step.pose.x(), expected.x(), 0.1 + 0.002 * k) << "scan " << k;
     EXPECT_NEAR(step.pose.y(), expected.y(), 0.1 + 0.002 * k) << "scan " << k;
-    // The first match's prediction is a guess, searched first (correlative::searchFirst()).
+    // The first match's prediction is a guess, searched first (tracking::searchFirst()).
     if (k > 0) EXPECT_EQ(step.source, k == 1 ? TrackingSource::Searched : TrackingSource::Match) << step.match.message;
     if (!step.new_keyframe) continue;
     scan_of_keyframe.push_back(k);
