@@ -1,11 +1,9 @@
 // swslam-sim: generates a natural-environment dataset (rawlog, ground truth, world
 // picture) from a scenario file. See doc/simulator.md.
 #include "cli.h"
-#include <swslam/sim/scenario.h>
-#include <swslam/sim/simulator.h>
 
+#include <swslam/app/sim_run.h>
 
-#include <exception>
 #include <iostream>
 
 int main(int argc, char** argv)
@@ -16,21 +14,11 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created if missing)",
                                       true, "", "DIR", cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "Do not print the summary", cmd);
-  try
-  {
-    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
-    const auto sc = swslam::sim::loadScenario(scenario.getValue());
-    const auto summary = swslam::sim::runSimulation(sc, output.getValue());
-    if (!quiet.getValue()) std::cout << swslam::sim::formatSummary(summary);
-    return 0;
-  }
-  catch (const TCLAP::ArgException& e)
-  {
-    std::cerr << "swslam-sim: " << e.error() << " (" << e.argId() << ")\n";
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "swslam-sim: " << e.what() << "\n";
-  }
-  return 1;
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+
+  swslam::app::SimOptions o;
+  o.scenario = scenario.getValue();
+  o.output = output.getValue();
+  o.summary = !quiet.getValue();
+  return swslam::app::runSim(o, std::cout, std::cerr);
 }
