@@ -1,10 +1,8 @@
 // Benchmark: map construction (insert, update, re-insertion after a loop) on a log with
 // reference poses; optionally writes the map outputs of the result.
 #include "cli.h"
-
-#include <swslam/app/bench_map_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -22,5 +20,5 @@ int main(int argc, char** argv)
   o.node_every = every.getValue();
   o.config = config.getValue();
   o.output = output.getValue();
-  return swslam::app::runBenchMap(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-bench-map", swslam_run_bench_map, o);
 }

@@ -1,9 +1,7 @@
 // Benchmark: PLICP vs MRPT's CICP (classic, LM) on scan pairs of a log with reference poses.
 #include "cli.h"
-
-#include <swslam/app/bench_matcher_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -25,5 +23,5 @@ int main(int argc, char** argv)
   o.method = only.getValue();
   o.floor = floor_arg.getValue();
   o.misses = misses_arg.getValue();
-  return swslam::app::runBenchMatcher(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-bench-matcher", swslam_run_bench_matcher, o);
 }

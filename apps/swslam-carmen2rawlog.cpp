@@ -2,10 +2,8 @@
 // each line's own timestamp, plus the reference poses as a TUM file. See doc/carmen.md.
 
 #include "cli.h"
-
-#include <swslam/app/carmen2rawlog_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -45,5 +43,5 @@ int main(int argc, char** argv)
   o.reference_odometry = reference_odometry.getValue();
   o.quiet = quiet.getValue();
   o.overwrite = overwrite.getValue();
-  return swslam::app::runCarmen2Rawlog(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-carmen2rawlog", swslam_run_carmen2rawlog, o);
 }

@@ -2,10 +2,8 @@
 // /tf_static), e.g. to replay a simulated dataset in ROS tools or through swslam's bag input.
 
 #include "cli.h"
-
-#include <swslam/app/rawlog2bag_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -32,5 +30,5 @@ int main(int argc, char** argv)
   o.conversion.base_frame = base_frame.getValue();
   o.conversion.compression = compression.getValue();
   o.overwrite = overwrite.getValue();
-  return swslam::app::runRawlog2Bag(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-rawlog2bag", swslam_run_rawlog2bag, o);
 }

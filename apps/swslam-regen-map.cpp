@@ -1,10 +1,8 @@
 // swslam-regen-map: rebuilds a finished run's map from its graph and the input log, e.g. at
 // 0.1 m for the offline map (see doc/system.md).
 #include "cli.h"
-
-#include <swslam/app/regen_map_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -26,5 +24,5 @@ int main(int argc, char** argv)
   o.config = config.getValue();
   if (resolution.isSet()) o.resolution = resolution.getValue();
   o.render = !no_render.getValue();
-  return swslam::app::runRegenMap(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-regen-map", swslam_run_regen_map, o);
 }

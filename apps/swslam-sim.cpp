@@ -1,10 +1,8 @@
 // swslam-sim: generates a natural-environment dataset (rawlog, ground truth, world
 // picture) from a scenario file. See doc/simulator.md.
 #include "cli.h"
-
-#include <swslam/app/sim_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -20,5 +18,5 @@ int main(int argc, char** argv)
   o.scenario = scenario.getValue();
   o.output = output.getValue();
   o.summary = !quiet.getValue();
-  return swslam::app::runSim(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-sim", swslam_run_sim, o);
 }
