@@ -35,7 +35,8 @@ prefix=$work/prefix
 for app in swslam swslam-live swslam-eval swslam-regen-map swslam-sim swslam-carmen2rawlog swslam-rawlog2bag \
            swslam-bench-matcher swslam-bench-map; do
   test -f "$prefix/lib/swslam/lib$app-run.so" || { echo "lib/swslam/lib$app-run.so not installed"; exit 1; }
-  runpath=$(readelf -d "$prefix/bin/$app" | sed -nE 's/.*\(RUNPATH\).*\[(.*)\]/\1/p')
+  # (A sanitized build writes it as an old-style RPATH: apps/CMakeLists.txt.)
+  runpath=$(readelf -d "$prefix/bin/$app" | sed -nE 's/.*\((RUNPATH|RPATH)\).*\[(.*)\]/\2/p')
   [[ $runpath == '$ORIGIN/../lib/swslam' ]] ||
     { echo "installed $app's RUNPATH is '$runpath', not \$ORIGIN/../lib/swslam"; exit 1; }
 done
