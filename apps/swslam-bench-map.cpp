@@ -1,13 +1,8 @@
 // Benchmark: map construction (insert, update, re-insertion after a loop) on a log with
 // reference poses; optionally writes the map outputs of the result.
 #include "cli.h"
-#include <swslam/bench/map_builder.h>
-#include <swslam/common/tum_io.h>
-#include <swslam/map/outputs.h>
-#include <swslam/app/config.h>
-
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -17,29 +12,13 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<size_t> every("n", "node-every", "One node every N scans", false, 20, "N", cmd);
   TCLAP::ValueArg<std::string> config("c", "config", "Config file ([map] section)", false, "", "INI", cmd);
   TCLAP::ValueArg<std::string> output("o", "output", "Write the map outputs here", false, "", "DIR", cmd);
-  try
-  {
-    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
-    swslam::map::MapParams params;
-    if (!config.getValue().empty())
-      params = swslam::app::loadConfig(config.getValue()).system.map;
-    const auto data = swslam::io::loadScansWithTruth(input.getValue(), swslam::common::readTum(gt.getValue()));
-    swslam::map::MapBuilder builder(params);
-    const auto f = swslam::bench::benchmarkMapBuilder(data, every.getValue(), builder);
-    std::cout << "# " << input.getValue() << ", resolution " << params.resolution << " m\n"
-              << swslam::bench::formatFigures(f);
-    if (!output.getValue().empty())
-    {
-      swslam::map::Overlay overlay;
-      overlay.trajectory = data.truth;
-      for (const auto& problem : swslam::map::writeMapOutputs(output.getValue(), builder.snapshot(), params, overlay))
-        std::cerr << "swslam-bench-map: " << problem.file << ": " << problem.message << "\n";
-    }
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "swslam-bench-map: " << e.what() << "\n";
-    return 1;
-  }
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+
+  swslam::app::BenchMapOptions o;
+  o.input = input.getValue();
+  o.ground_truth = gt.getValue();
+  o.node_every = every.getValue();
+  o.config = config.getValue();
+  o.output = output.getValue();
+  return SWSLAM_RUN_IN_LIBRARY("swslam-bench-map", swslam_run_bench_map, o);
 }

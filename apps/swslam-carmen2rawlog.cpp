@@ -2,67 +2,46 @@
 // each line's own timestamp, plus the reference poses as a TUM file. See doc/carmen.md.
 
 #include "cli.h"
-#include <swslam/io/carmen2rawlog.h>
-
-#include <filesystem>
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
-  try
-  {
-    TCLAP::CmdLine cmd("swslam-carmen2rawlog", ' ', "0.1");
-    TCLAP::ValueArg<std::string> in("i", "input", "Input CARMEN log (*.log, *.log.gz)", true, "",
-                                    "carmen.log", cmd);
-    TCLAP::ValueArg<std::string> out("o", "output", "Output rawlog (*.rawlog)", true, "",
-                                     "out.rawlog", cmd);
-    TCLAP::ValueArg<std::string> gt("", "ground-truth",
-                                    "Write the scans' reference poses (x y theta) as TUM", false,
-                                    "", "gt.tum", cmd);
-    TCLAP::ValueArg<int> level("z", "compress-level", "Rawlog gzip level, 0-9 (default 5)", false,
-                               5, "0-9", cmd);
-    TCLAP::ValueArg<double> max_range("", "max-range",
-                                      "Force the maximum range [m] (default: from the log)",
-                                      false, 0, "metres", cmd);
-    TCLAP::SwitchArg laser_only("", "laser-only", "Drop the odometry (ODOM lines, or the FLASER/RLASER odom_* fields of a log without them)", cmd);
-    TCLAP::SwitchArg reference_odometry(
-        "", "reference-odometry",
-        "Write each scan's reference pose as odometry before it (needs --laser-only "
-        "--repair-timestamps): a perfect motion prediction, for evaluation only",
-        cmd);
-    TCLAP::SwitchArg repair("", "repair-timestamps",
-                            "Make each stream's timestamps strictly increasing", cmd);
-    TCLAP::SwitchArg overwrite("w", "overwrite", "Overwrite existing output files", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", "Print no warnings, only the summary", cmd);
-    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+  TCLAP::CmdLine cmd("swslam-carmen2rawlog", ' ', "0.1");
+  TCLAP::ValueArg<std::string> in("i", "input", "Input CARMEN log (*.log, *.log.gz)", true, "",
+                                  "carmen.log", cmd);
+  TCLAP::ValueArg<std::string> out("o", "output", "Output rawlog (*.rawlog)", true, "",
+                                   "out.rawlog", cmd);
+  TCLAP::ValueArg<std::string> gt("", "ground-truth",
+                                  "Write the scans' reference poses (x y theta) as TUM", false,
+                                  "", "gt.tum", cmd);
+  TCLAP::ValueArg<int> level("z", "compress-level", "Rawlog gzip level, 0-9 (default 5)", false,
+                             5, "0-9", cmd);
+  TCLAP::ValueArg<double> max_range("", "max-range",
+                                    "Force the maximum range [m] (default: from the log)",
+                                    false, 0, "metres", cmd);
+  TCLAP::SwitchArg laser_only("", "laser-only", "Drop the odometry (ODOM lines, or the FLASER/RLASER odom_* fields of a log without them)", cmd);
+  TCLAP::SwitchArg reference_odometry(
+      "", "reference-odometry",
+      "Write each scan's reference pose as odometry before it (needs --laser-only "
+      "--repair-timestamps): a perfect motion prediction, for evaluation only",
+      cmd);
+  TCLAP::SwitchArg repair("", "repair-timestamps",
+                          "Make each stream's timestamps strictly increasing", cmd);
+  TCLAP::SwitchArg overwrite("w", "overwrite", "Overwrite existing output files", cmd);
+  TCLAP::SwitchArg quiet("q", "quiet", "Print no warnings, only the summary", cmd);
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
-    for (const auto& path : {out.getValue(), gt.getValue()})
-      if (!path.empty() && std::filesystem::exists(path) && !overwrite.getValue())
-        throw std::runtime_error("'" + path + "' exists (use -w to overwrite)");
-
-    swslam::io::Carmen2RawlogOptions opts;
-    opts.input = in.getValue();
-    opts.output = out.getValue();
-    opts.ground_truth = gt.getValue();
-    opts.compress_level = level.getValue();
-    opts.params.max_range = max_range.getValue();
-    opts.params.laser_only = laser_only.getValue();
-    opts.params.repair_timestamps = repair.getValue();
-    opts.reference_odometry = reference_odometry.getValue();
-    if (quiet.getValue()) opts.params.max_printed_warnings = 0;
-
-    const auto stats = swslam::io::carmen2rawlog(opts);
-    std::cout << "wrote " << opts.output;
-    if (!opts.ground_truth.empty()) std::cout << " and " << opts.ground_truth;
-    std::cout << "\n" << swslam::io::formatCarmenStats(stats);
-    if (stats.damage.empty()) return 0;
-    std::cerr << "swslam-carmen2rawlog: " << stats.damage << "; wrote the " << stats.scans()
-              << " scans before it\n";
-    return 2;
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "swslam-carmen2rawlog: " << e.what() << "\n";
-    return 1;
-  }
+  swslam::app::Carmen2RawlogRunOptions o;
+  o.input = in.getValue();
+  o.output = out.getValue();
+  o.ground_truth = gt.getValue();
+  o.compress_level = level.getValue();
+  o.max_range = max_range.getValue();
+  o.laser_only = laser_only.getValue();
+  o.repair_timestamps = repair.getValue();
+  o.reference_odometry = reference_odometry.getValue();
+  o.quiet = quiet.getValue();
+  o.overwrite = overwrite.getValue();
+  return SWSLAM_RUN_IN_LIBRARY("swslam-carmen2rawlog", swslam_run_carmen2rawlog, o);
 }

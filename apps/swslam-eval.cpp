@@ -5,7 +5,8 @@
 //   swslam-eval laser-optimum TRAJ.tum LOG   how far the scans' own constraints pull TRAJ
 
 #include "cli.h"
-#include <swslam/app/eval_command.h>
+#include "programs.h"
+#include "run_in_library.h"
 
 #include <iostream>
 
@@ -62,8 +63,7 @@ int main(int argc, char** argv)
     o.min_gap = min_gap.getValue();
     o.revisit_gap = revisit_gap.getValue();
     o.stride = stride.getValue();
-    swslam::app::runEval(o, std::cout);
-    return 0;
+    return SWSLAM_RUN_IN_LIBRARY("swslam-eval", swslam_run_eval, o);
   }
   catch (const std::exception& e)
   {

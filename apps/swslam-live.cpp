@@ -1,9 +1,7 @@
 // swslam-live: live mapping from a Hokuyo through MRPT's CHokuyoURG (see doc/live.md).
 #include "cli.h"
-
-#include <swslam/app/live_run.h>
-
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -38,5 +36,5 @@ int main(int argc, char** argv)
   o.deterministic = deterministic.getValue();
   o.status = !quiet.getValue();
   o.render = !no_render.getValue();
-  return swslam::app::runLive(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam-live", swslam_run_live, o);
 }

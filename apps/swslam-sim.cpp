@@ -1,12 +1,8 @@
 // swslam-sim: generates a natural-environment dataset (rawlog, ground truth, world
 // picture) from a scenario file. See doc/simulator.md.
 #include "cli.h"
-#include <swslam/sim/scenario.h>
-#include <swslam/sim/simulator.h>
-
-
-#include <exception>
-#include <iostream>
+#include "programs.h"
+#include "run_in_library.h"
 
 int main(int argc, char** argv)
 {
@@ -16,21 +12,11 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created if missing)",
                                       true, "", "DIR", cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "Do not print the summary", cmd);
-  try
-  {
-    if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
-    const auto sc = swslam::sim::loadScenario(scenario.getValue());
-    const auto summary = swslam::sim::runSimulation(sc, output.getValue());
-    if (!quiet.getValue()) std::cout << swslam::sim::formatSummary(summary);
-    return 0;
-  }
-  catch (const TCLAP::ArgException& e)
-  {
-    std::cerr << "swslam-sim: " << e.error() << " (" << e.argId() << ")\n";
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "swslam-sim: " << e.what() << "\n";
-  }
-  return 1;
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+
+  swslam::app::SimOptions o;
+  o.scenario = scenario.getValue();
+  o.output = output.getValue();
+  o.summary = !quiet.getValue();
+  return SWSLAM_RUN_IN_LIBRARY("swslam-sim", swslam_run_sim, o);
 }

@@ -1,7 +1,7 @@
 // swslam: sliding-window 2D LiDAR SLAM on a rawlog, CARMEN log or ROS 1 bag (see README and doc/system.md).
 #include "cli.h"
-
-#include <swslam/app/offline_run.h>
+#include "programs.h"
+#include "run_in_library.h"
 
 #include <iostream>
 
@@ -57,5 +57,5 @@ int main(int argc, char** argv)
   o.use_odometry = !no_odometry.getValue();
   o.progress = !no_progress.getValue();
   o.render = !no_render.getValue();
-  return swslam::app::runOffline(o, std::cout, std::cerr);
+  return SWSLAM_RUN_IN_LIBRARY("swslam", swslam_run_offline, o);
 }

@@ -68,8 +68,6 @@ void consistency(const EvalOptions& o, const std::vector<common::StampedPose>& e
 }
 }  // namespace
 
-std::vector<std::string> evalCommands() { return {"ate", "relations", "consistency", "laser-optimum"}; }
-
 void runEval(const EvalOptions& o, std::ostream& out)
 {
   const auto commands = evalCommands();

@@ -27,8 +27,9 @@ struct EvalOptions
   long stride = 1;        ///< consistency, laser-optimum: every K-th scan
 };
 
-/** The commands, in the order the help lists them. */
-std::vector<std::string> evalCommands();
+/** The commands, in the order the help lists them (inline: the program's executable parses
+ * its command line with them before it loads the library). */
+inline std::vector<std::string> evalCommands() { return {"ate", "relations", "consistency", "laser-optimum"}; }
 
 /** Runs one command and prints its report to `out`. Throws std::invalid_argument naming the
  * option that is wrong, std::runtime_error naming an input that cannot be used. */

@@ -1,5 +1,8 @@
 #include <swslam/app/exit_codes.h>
 
+#include <exception>
+#include <ostream>
+
 namespace swslam::app
 {
 ExitCode exitCode(const RunOutcome& o)
@@ -11,6 +14,19 @@ ExitCode exitCode(const RunOutcome& o)
   if (o.nothing_to_map || o.truth_unusable) return kExitInputError;
   if (o.outputs_failed) return kExitOutputError;
   return kExitOk;
+}
+
+int exitCodeOf(const char* program, std::ostream& err, const std::function<int()>& work)
+{
+  try
+  {
+    return work();
+  }
+  catch (const std::exception& e)
+  {
+    err << program << ": " << e.what() << "\n";
+    return kExitUsage;
+  }
 }
 
 }  // namespace swslam::app

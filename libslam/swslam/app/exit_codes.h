@@ -2,6 +2,9 @@
 // What a program's exit code says, the same for every swslam program, and how a run's
 // outcome makes it.
 
+#include <functional>
+#include <iosfwd>
+
 namespace swslam::app
 {
 /** Exit codes of the programs' runs (runOffline, runLive). */
@@ -33,5 +36,9 @@ struct RunOutcome
  * input failed, module failed, nothing to map or an unusable ground truth (kExitInputError),
  * some outputs failed; else kExitOk. */
 ExitCode exitCode(const RunOutcome& o);
+
+/** Runs a program's work and returns its exit code; an exception it throws is printed to `err`
+ * as "PROGRAM: what" and makes kExitUsage. */
+int exitCodeOf(const char* program, std::ostream& err, const std::function<int()>& work);
 
 }  // namespace swslam::app

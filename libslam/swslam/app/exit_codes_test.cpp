@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <stdexcept>
+
 using namespace swslam::app;
 
 TEST(ExitCode, TheFirstProblemInOrderOfWeightMakesTheCode)
@@ -26,4 +29,13 @@ TEST(ExitCode, TheFirstProblemInOrderOfWeightMakesTheCode)
   EXPECT_EQ(exitCode(empty), kExitInputError);
   empty.module_failed = true;
   EXPECT_EQ(exitCode(empty), kExitModuleError);
+}
+
+TEST(ExitCode, AnExceptionOfTheWorkIsPrintedWithTheProgramsNameAndExitsOne)
+{
+  std::ostringstream err;
+  EXPECT_EQ(exitCodeOf("swslam-x", err, [] { return 4; }), 4);
+  EXPECT_EQ(err.str(), "");
+  EXPECT_EQ(exitCodeOf("swslam-x", err, []() -> int { throw std::runtime_error("'a.log' is missing"); }), kExitUsage);
+  EXPECT_EQ(err.str(), "swslam-x: 'a.log' is missing\n");
 }
