@@ -59,13 +59,19 @@ int main(int argc, char** argv)
                 load.skipped_lines);
     for (size_t k = 0; k < load.skipped_lines; ++k)
       std::printf("  skipped line %zu: %s\n", load.skipped_line_numbers[k], load.skip_reasons[k].c_str());
+    if (load.placed_vertices > 0)
+      std::printf("placed %zu vertices that only edges name, along the odometry chain%s\n", load.placed_vertices,
+                  load.placed_pieces > 1 ? (", in " + std::to_string(load.placed_pieces) +
+                                            " pieces no edge joins (warning: each held at its own first vertex)")
+                                               .c_str()
+                                         : "");
     if (load.edges == 0) throw std::runtime_error(in.getValue() + ": the graph has no edges: nothing to optimize");
 
     const swslam::graph::OptimizationReport r = swslam::graph::optimizeFull(graph, params);
-    std::printf("status: %s (%s)\niterations: %zu\ninitial chi2: %.9g\nfinal chi2: %.9g\n"
+    std::printf("status: %s (%s)\nstart: %s\niterations: %zu\ninitial chi2: %.9g\nfinal chi2: %.9g\n"
                 "active squared residuals: %.9g\ntime: %.3f ms\n",
-                swslam::graph::statusName(r.status), r.message.c_str(), r.iterations, r.initial_chi2,
-                r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
+                swslam::graph::statusName(r.status), r.message.c_str(), r.lago_start ? "LAGO" : "the file's poses",
+                r.iterations, r.initial_chi2, r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
     if (r.components > 1)
       std::printf("warning: the graph falls apart into %zu connected components; each one without a FIX "
                   "node is held at its first node\n", r.components);

@@ -29,10 +29,15 @@ awk -v c="$again" 'BEGIN { exit !(c != "" && c < 0.01) }' || fail "reloaded grap
 grep -q "1 skipped lines" "$DIR/garbage.txt" || fail "skip count"
 grep -q "skipped line 4: unknown keyword 'this'" "$DIR/garbage.txt" || fail "skip line number"
 
-# Bad records and bad options fail with a message and no output file.
+# A vertex that only an edge names is placed from it (an edge-only g2o file).
 echo "EDGE2 0 99 1 0 0 1 0 1 1 0 0" >> "$DIR/garbage.graph"
-if "$BIN" -i "$DIR/garbage.graph" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "missing node accepted"; fi
-grep -q "missing node 99" "$DIR/err.txt" || fail "missing node message: $(cat "$DIR/err.txt")"
+"$BIN" -i "$DIR/garbage.graph" -o "$DIR/placed.g2o" > "$DIR/placed.txt" || fail "a vertex only an edge names refused"
+grep -q "placed 1 vertices that only edges name" "$DIR/placed.txt" || fail "placed vertex not said: $(cat "$DIR/placed.txt")"
+
+# Bad records and bad options fail with a message and no output file.
+echo "EDGE2 0 1 nan 0 0 1 0 1 1 0 0" >> "$DIR/garbage.graph"
+if "$BIN" -i "$DIR/garbage.graph" -o "$DIR/bad.g2o" 2> "$DIR/err.txt" > /dev/null; then fail "non-finite edge accepted"; fi
+grep -q "measurement is not finite" "$DIR/err.txt" || fail "non-finite edge message: $(cat "$DIR/err.txt")"
 [ ! -e "$DIR/bad.g2o" ] || fail "output written on error"
 if "$BIN" -i "$IN" -o "$DIR/bad.g2o" --alpha 3 2> "$DIR/err.txt" > /dev/null; then fail "alpha 3 accepted"; fi
 grep -q "alpha must be in" "$DIR/err.txt" || fail "alpha message"

@@ -8,7 +8,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <deque>
 #include <limits>
+#include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -38,6 +41,80 @@ bool readNumbers(std::istringstream& s, double* v, int n)
     if (end == token.c_str() || *end != '\0') return false;
   }
   return !(s >> token);
+}
+
+/** Places the vertices that only the edges name (an edge-only g2o file, as SE-Sync's CSAIL,
+ * M3500 or KITTI): each reached from a placed vertex by an edge, its measurement composed
+ * (inverted when walked backwards), odometry edges (to == from + 1) before any other; a vertex
+ * no edge reaches from a placed one starts a piece of its own at the origin. Returns the
+ * number placed and, in `pieces`, the pieces started so. */
+size_t placeMissingVertices(PoseGraph& graph, const std::vector<EdgeRecord>& edges, size_t& pieces)
+{
+  std::map<PoseGraph::TNodeID, std::vector<size_t>> at;
+  for (size_t k = 0; k < edges.size(); ++k)
+  {
+    at[edges[k].from].push_back(k);
+    at[edges[k].to].push_back(k);
+  }
+  // 0-1 breadth first: an odometry edge costs nothing, any other one step, so that a vertex
+  // is placed along the chain wherever the chain reaches it. A vertex is placed when it leaves
+  // the queue, from the edge that reached it at the least cost.
+  struct Reach
+  {
+    size_t cost;
+    size_t edge;
+    PoseGraph::TNodeID from;
+  };
+  std::map<PoseGraph::TNodeID, Reach> best;
+  std::deque<PoseGraph::TNodeID> queue;
+  for (const auto& [id, incident] : at)
+    if (graph.hasNode(id)) queue.push_back(id), best[id] = {0, 0, id};
+  size_t placed = 0;
+  pieces = 0;
+  auto grow = [&]() {
+    std::set<PoseGraph::TNodeID> done;
+    while (!queue.empty())
+    {
+      const PoseGraph::TNodeID p = queue.front();
+      queue.pop_front();
+      if (!done.insert(p).second) continue;
+      if (!graph.hasNode(p))
+      {
+        const Reach& r = best.at(p);
+        const EdgeRecord& e = edges[r.edge];
+        const mrpt::poses::CPose2D& z = e.z.mean;
+        graph.addNode(p, e.from == r.from ? graph.pose(r.from) + z : graph.pose(r.from) + (-z));
+        ++placed;
+      }
+      const size_t cost = best.at(p).cost;
+      for (const size_t k : at[p])
+      {
+        const EdgeRecord& e = edges[k];
+        const PoseGraph::TNodeID q = e.from == p ? e.to : e.from;
+        if (done.count(q) || graph.hasNode(q)) continue;
+        const bool odometry = e.to == e.from + 1;
+        const size_t c = cost + (odometry ? 0 : 1);
+        const auto it = best.find(q);
+        if (it != best.end() && it->second.cost <= c) continue;
+        best[q] = {c, k, p};
+        if (odometry)
+          queue.push_front(q);
+        else
+          queue.push_back(q);
+      }
+    }
+  };
+  grow();
+  for (const auto& [id, incident] : at)
+    if (!graph.hasNode(id))
+    {
+      graph.addNode(id, mrpt::poses::CPose2D());
+      ++placed, ++pieces;
+      best[id] = {0, 0, id};
+      queue.push_back(id);
+      grow();
+    }
+  return placed;
 }
 
 std::string lineTag(const std::string& source, size_t line)
@@ -129,7 +206,12 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
     else
       skip(line, "unknown keyword '" + key + "'");
   }
-  if (graph.nodeCount() == 0) throw std::runtime_error(source + ": no vertex in the file");
+  if (graph.nodeCount() == 0 && edges.empty()) throw std::runtime_error(source + ": no vertex and no edge in the file");
+  for (const auto& e : edges)
+    if (!std::isfinite(e.z.mean.x()) || !std::isfinite(e.z.mean.y()) || !std::isfinite(e.z.mean.phi()))
+      throw std::runtime_error(lineTag(source, e.line) + "edge " + std::to_string(e.from) + " -> " +
+                               std::to_string(e.to) + ": measurement is not finite");
+  rep.placed_vertices = placeMissingVertices(graph, edges, rep.placed_pieces);
   for (const auto& e : edges)
   {
     try

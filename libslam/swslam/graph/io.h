@@ -15,10 +15,13 @@
 //
 // Skipped with a count and the line numbers: blank and comment lines (not counted), lines
 // with an unknown keyword or unparseable fields, EQUIV lines (node merging is not
-// supported), FIX lines after the first. Errors (std::runtime_error naming the file and
-// line): a duplicate vertex id, a non-finite value, an edge naming a missing vertex or a
-// vertex to itself, an information matrix that is not positive definite, FIX of a missing
-// vertex, a file with no vertex.
+// supported), FIX lines after the first. A vertex that only edges name (an edge-only g2o file)
+// is placed from them: along the odometry chain (to == from + 1) from a placed vertex, through
+// other edges where the chain breaks, and at the origin as a piece of its own where no edge
+// reaches it; GraphLoadReport says how many were placed, and in how many pieces. Errors
+// (std::runtime_error naming the file and line): a duplicate vertex id, a non-finite value,
+// an edge from a vertex to itself, an information matrix that is not positive definite, FIX
+// of a missing vertex, a file with no vertex and no edge.
 //
 // Written: g2o form (VERTEX_SE2, FIX root, EDGE_SE2 ... # kind=<name>, and " switched_off" for
 // an edge the robust kernel switched off), full precision, which MRPT, g2o and this reader all
@@ -39,6 +42,8 @@ struct GraphLoadReport
   std::vector<size_t> skipped_line_numbers;  ///< all of them, 1-based
   std::vector<std::string> skip_reasons;     ///< parallel to skipped_line_numbers
   std::vector<size_t> switched_off;          ///< indices of the edges marked " switched_off"
+  size_t placed_vertices = 0;  ///< vertices no VERTEX line gave, placed from the edges
+  size_t placed_pieces = 0;    ///< of them, pieces no edge joins to a vertex placed before (at the origin)
 };
 
 /** Reads a graph from `in`; `source` names it in messages. */

@@ -63,6 +63,8 @@ struct OptimizationReport
   /** The kernel per edge kind at the end (adaptive: as estimated from the residuals). */
   KindKernels kernels{};
   std::vector<size_t> switched_off;  ///< robustified edges whose final weight is below switched_off_weight
+  /** A whole graph's optimization started from LAGO's poses, not the guess (initialization.h). */
+  bool lago_start = false;
   std::string message;          ///< why it stopped, in words
 };
 

@@ -1,5 +1,7 @@
 #include <swslam/graph/sliding_window.h>
 
+#include <swslam/graph/initialization.h>
+
 #include <limits>
 #include <Eigen/Dense>
 
@@ -127,9 +129,9 @@ void writeBack(const GraphSubproblem& sub, PoseGraph& graph)
 namespace
 {
 OptimizationReport optimizeSubproblem(GraphSubproblem sub, PoseGraph& graph,
-                                      const GraphOptimizerParams& params)
+                                      const GraphOptimizerParams& params, bool whole = false)
 {
-  OptimizationReport rep = optimizeGraphProblem(sub.problem, params);
+  OptimizationReport rep = whole ? optimizeFromBestStart(sub.problem, params) : optimizeGraphProblem(sub.problem, params);
   if (rep.status != OptimizationStatus::Diverged) writeBack(sub, graph);
   for (size_t& k : rep.switched_off) k = sub.edge_indices[k];  // the graph's edge indices
   return rep;
@@ -143,7 +145,7 @@ OptimizationReport optimizeWindow(PoseGraph& graph, const GraphOptimizerParams& 
 
 OptimizationReport optimizeFull(PoseGraph& graph, const GraphOptimizerParams& params)
 {
-  return optimizeSubproblem(fullSubproblem(graph, params), graph, params);
+  return optimizeSubproblem(fullSubproblem(graph, params), graph, params, /*whole=*/true);
 }
 
 }  // namespace swslam::graph

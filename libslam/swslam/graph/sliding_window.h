@@ -40,7 +40,8 @@ void writeBack(const GraphSubproblem& sub, PoseGraph& graph);
  * (also for optimizeFull). */
 OptimizationReport optimizeWindow(PoseGraph& graph, const GraphOptimizerParams& params);
 
-/** Optimizes the whole graph with the root fixed; updated unless Diverged. */
+/** Optimizes the whole graph with the root fixed, from its poses or, where they are a poor
+ * guess, from LAGO's (optimizeFromBestStart); updated unless Diverged. */
 OptimizationReport optimizeFull(PoseGraph& graph, const GraphOptimizerParams& params);
 
 }  // namespace swslam::graph

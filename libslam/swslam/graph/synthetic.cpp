@@ -97,19 +97,21 @@ std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& o)
 {
   const std::vector<PoseGraph::TNodeID> ids = graph.nodeIds();
   const size_t run = o.grouped ? std::max<size_t>(o.group_size, 1) : 1;
-  if (ids.size() < run + 1)
+  if (ids.size() < run + o.min_gap + 1)
     throw std::invalid_argument("false loops: the graph has " + std::to_string(ids.size()) + " nodes, fewer than " +
-                                std::to_string(run + 1));
+                                std::to_string(run + o.min_gap + 1));
   mrpt::math::CMatrixDouble33 info;
   info.setZero();
   info(0, 0) = info(1, 1) = 1 / (0.05 * 0.05);
   info(2, 2) = 1 / (0.01 * 0.01);
+  std::vector<std::pair<double, size_t>> loops;  // (trace of the information, edge)
   for (size_t k = 0; k < graph.edgeCount(); ++k)
-    if (graph.edge(k).kind == EdgeKind::Loop)
-    {
-      info = graph.edge(k).measurement->cov_inv;
-      break;
-    }
+    if (graph.edge(k).kind == EdgeKind::Loop) loops.emplace_back(graph.edge(k).measurement->cov_inv.trace(), k);
+  if (!loops.empty())
+  {
+    std::nth_element(loops.begin(), loops.begin() + loops.size() / 2, loops.end());
+    info = graph.edge(loops[loops.size() / 2].second).measurement->cov_inv;
+  }
   std::mt19937 rng(o.seed);
   std::uniform_int_distribution<size_t> start(0, ids.size() - run);
   std::uniform_real_distribution<double> offset(-o.max_offset, o.max_offset), angle(-M_PI, M_PI);
@@ -117,7 +119,7 @@ std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& o)
   while (added.size() < o.count)
   {
     const size_t a = start(rng), b = start(rng);
-    if (a == b) continue;
+    if ((a > b ? a - b : b - a) < o.min_gap) continue;
     mrpt::poses::CPosePDFGaussianInf z;
     z.mean = mrpt::poses::CPose2D(offset(rng), offset(rng), angle(rng));
     z.cov_inv = info;
@@ -125,6 +127,13 @@ std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& o)
       added.push_back(graph.addEdge(ids[a + t], ids[b + t], z, EdgeKind::Loop));
   }
   return added;
+}
+
+size_t loopEdgeCount(const PoseGraph& graph)
+{
+  size_t n = 0;
+  for (size_t k = 0; k < graph.edgeCount(); ++k) n += graph.edge(k).kind == EdgeKind::Loop;
+  return n;
 }
 
 std::vector<geometry::Pose2> truthFromGraph(const PoseGraph& graph)

@@ -38,22 +38,27 @@ struct SyntheticGraph
 SyntheticGraph makeGridWalkGraph(const SyntheticGraphOptions& options);
 
 /** False loop closures added to a graph, as benchmarks of robust back ends do (Suenderhauf
- * and Protzel's Vertigo): random node pairs with a random measurement, or (grouped) runs of
- * `group_size` consecutive pairs (i + t, j + t) sharing one measurement, which agree with each
- * other and so reinforce one another. */
+ * and Protzel's Vertigo; ../shared/graphs/README.md): random node pairs at least `min_gap`
+ * ids apart with a random measurement (x, y uniform in +-max_offset, theta uniform in +-pi),
+ * or (grouped) runs of `group_size` consecutive pairs (i + t, j + t) sharing one measurement,
+ * which agree with each other and so reinforce one another. */
 struct FalseLoopOptions
 {
   size_t count = 0;
   bool grouped = false;
   size_t group_size = 10;
-  double max_offset = 5.0;  ///< [m] measured translation uniform in [-max_offset, max_offset]^2
+  double max_offset = 10.0;  ///< [m] measured translation uniform in [-max_offset, max_offset]^2
+  size_t min_gap = 10;       ///< the pair's node ids at least this far apart
   unsigned seed = 1;
 };
 
-/** Adds the false loops (kind Loop, the information of the graph's first loop edge, else of
- * 5 cm and 0.6 degrees) and returns their edge indices. Throws std::invalid_argument for a
- * graph of fewer than two nodes (or fewer than group_size + 1 when grouped). */
+/** Adds the false loops (kind Loop, with the information of the graph's median loop edge by
+ * its trace, else of 5 cm and 0.6 degrees) and returns their edge indices. Throws
+ * std::invalid_argument for a graph too small to hold a pair (or a run) min_gap apart. */
 std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& options);
+
+/** The loop edges of a graph (its true loops, before false ones are added). */
+size_t loopEdgeCount(const PoseGraph& graph);
 
 struct TruthError
 {

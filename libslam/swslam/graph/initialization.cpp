@@ -1,0 +1,226 @@
+#include <swslam/graph/initialization.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+
+namespace swslam::graph
+{
+namespace
+{
+/** Per pose, the edges that touch it. */
+std::vector<std::vector<int>> incidence(const GraphProblem& problem)
+{
+  std::vector<std::vector<int>> at(problem.poses.size());
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+  {
+    at[problem.edges[k].i].push_back(static_cast<int>(k));
+    at[problem.edges[k].j].push_back(static_cast<int>(k));
+  }
+  return at;
+}
+
+/** The anchors: fixed poses, and the poses the spanning tree starts a component from (-1 in
+ * `tree` and not reached from a fixed pose). */
+std::vector<char> anchors(const GraphProblem& problem, const std::vector<int>& tree)
+{
+  std::vector<char> anchor(problem.poses.size(), 0);
+  for (size_t p = 0; p < problem.poses.size(); ++p) anchor[p] = tree[p] < 0 || problem.fixed[p];
+  return anchor;
+}
+
+/** Solves the linear least squares of `dims` unknowns per free pose, A x = b (A symmetric
+ * positive definite, assembled as triplets of free-pose blocks); x per pose, anchors 0. */
+Eigen::VectorXd solveFree(const std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& b, int size)
+{
+  Eigen::SparseMatrix<double> A(size, size);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+  if (ldlt.info() != Eigen::Success) throw std::runtime_error("lagoPoses: the linear system is singular");
+  Eigen::VectorXd x = ldlt.solve(b);
+  if (ldlt.info() != Eigen::Success || !x.allFinite())
+    throw std::runtime_error("lagoPoses: the linear system could not be solved");
+  return x;
+}
+
+Eigen::Matrix2d rotation(double theta)
+{
+  const double c = std::cos(theta), s = std::sin(theta);
+  return (Eigen::Matrix2d() << c, -s, s, c).finished();
+}
+}  // namespace
+
+std::vector<int> spanningTree(const GraphProblem& problem)
+{
+  checkProblem(problem);
+  const size_t n = problem.poses.size();
+  const auto at = incidence(problem);
+  // Dijkstra on the heading's variance: each pose reached by the path along which its heading
+  // is known best, so that the multiples of 2 pi read off the tree are the likeliest (a path
+  // along a long odometry chain can drift by more than pi where a loop is certain).
+  std::vector<int> tree(n, -1);
+  std::vector<double> cost(n, std::numeric_limits<double>::infinity());
+  std::vector<char> done(n, 0);
+  using Item = std::pair<double, size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  auto grow = [&]() {
+    while (!heap.empty())
+    {
+      const auto [reached, p] = heap.top();
+      heap.pop();
+      if (done[p]) continue;
+      done[p] = 1;
+      for (const int k : at[p])
+      {
+        const auto& e = problem.edges[k];
+        const size_t q = static_cast<size_t>(e.i) == p ? e.j : e.i;
+        const double c = reached + e.information.inverse()(2, 2);
+        if (done[q] || cost[q] <= c) continue;
+        cost[q] = c;
+        tree[q] = k;
+        heap.push({c, q});
+      }
+    }
+  };
+  for (size_t p = 0; p < n; ++p)
+    if (problem.fixed[p]) cost[p] = 0, heap.push({0.0, p});
+  grow();
+  for (size_t p = 0; p < n; ++p)
+    if (!done[p])
+    {
+      cost[p] = 0;  // a component without a fixed pose starts at its first pose
+      heap.push({0.0, p});
+      grow();
+    }
+  return tree;
+}
+
+std::vector<double> unwrappedRotations(const GraphProblem& problem, const std::vector<int>& tree)
+{
+  const size_t n = problem.poses.size();
+  // The tree's headings, composed outwards from the anchors (the tree's order of discovery is
+  // not kept, so pass over it until every heading is known: at most its depth).
+  std::vector<double> heading(n, 0);
+  std::vector<char> known(n, 0);
+  for (size_t p = 0; p < n; ++p)
+    if (tree[p] < 0) heading[p] = problem.poses[p].z(), known[p] = 1;
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (size_t p = 0; p < n; ++p)
+    {
+      if (known[p]) continue;
+      const auto& e = problem.edges[tree[p]];
+      const size_t from = static_cast<size_t>(e.i) == p ? e.j : e.i;
+      if (!known[from]) continue;
+      heading[p] = static_cast<size_t>(e.j) == p ? heading[from] + e.z.z() : heading[from] - e.z.z();
+      known[p] = 1;
+      changed = true;
+    }
+  }
+  std::vector<double> d(problem.edges.size());
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+  {
+    const auto& e = problem.edges[k];
+    const double turns = std::round((heading[e.j] - heading[e.i] - e.z.z()) / (2 * M_PI));
+    d[k] = e.z.z() + 2 * M_PI * turns;
+  }
+  return d;
+}
+
+std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
+{
+  const std::vector<int> tree = spanningTree(problem);
+  const std::vector<double> d = unwrappedRotations(problem, tree);
+  const std::vector<char> anchor = anchors(problem, tree);
+  const size_t n = problem.poses.size();
+  std::vector<int> index(n, -1);  // of the free poses' unknowns
+  int free = 0;
+  for (size_t p = 0; p < n; ++p)
+    if (!anchor[p]) index[p] = free++;
+  std::vector<geometry::Pose2> poses = problem.poses;
+  if (free == 0) return poses;
+
+  // Headings: one unknown per free pose.
+  std::vector<Eigen::Triplet<double>> a;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(free);
+  std::vector<Eigen::Matrix3d> covariance(problem.edges.size());
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+  {
+    const auto& e = problem.edges[k];
+    covariance[k] = e.information.inverse();
+    const double w = 1 / covariance[k](2, 2);
+    const int i = index[e.i], j = index[e.j];
+    // w (theta_j - theta_i - d)^2
+    if (i >= 0) a.emplace_back(i, i, w), b(i) -= w * d[k];
+    if (j >= 0) a.emplace_back(j, j, w), b(j) += w * d[k];
+    if (i >= 0 && j >= 0) a.emplace_back(i, j, -w), a.emplace_back(j, i, -w);
+    if (i >= 0 && j < 0) b(i) += w * poses[e.j].z();
+    if (j >= 0 && i < 0) b(j) += w * poses[e.i].z();
+  }
+  const Eigen::VectorXd theta = solveFree(a, b, free);
+  for (size_t p = 0; p < n; ++p)
+    if (index[p] >= 0) poses[p].z() = theta(index[p]);
+
+  // Positions, given the headings: two unknowns per free pose.
+  a.clear();
+  b = Eigen::VectorXd::Zero(2 * free);
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+  {
+    const auto& e = problem.edges[k];
+    const Eigen::Matrix2d R = rotation(poses[e.i].z());
+    const Eigen::Matrix2d W = R * covariance[k].topLeftCorner<2, 2>().inverse() * R.transpose();
+    const Eigen::Vector2d c = R * e.z.head<2>();  // t_j - t_i should be c
+    const int i = index[e.i], j = index[e.j];
+    auto block = [&](int r, int col, const Eigen::Matrix2d& m) {
+      for (int u = 0; u < 2; ++u)
+        for (int v = 0; v < 2; ++v) a.emplace_back(2 * r + u, 2 * col + v, m(u, v));
+    };
+    if (i >= 0) block(i, i, W), b.segment<2>(2 * i) -= W * c;
+    if (j >= 0) block(j, j, W), b.segment<2>(2 * j) += W * c;
+    if (i >= 0 && j >= 0) block(i, j, -W), block(j, i, -W);
+    if (i >= 0 && j < 0) b.segment<2>(2 * i) += W * poses[e.j].head<2>();
+    if (j >= 0 && i < 0) b.segment<2>(2 * j) += W * poses[e.i].head<2>();
+  }
+  const Eigen::VectorXd t = solveFree(a, b, 2 * free);
+  for (size_t p = 0; p < n; ++p)
+    if (index[p] >= 0) poses[p].head<2>() = t.segment<2>(2 * index[p]);
+  for (auto& p : poses) p.z() = std::remainder(p.z(), 2 * M_PI);
+  return poses;
+}
+
+OptimizationReport optimizeFromBestStart(GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  const KindKernels kernels = uniformKernels(params.kernel());
+  GraphProblem lago = problem;
+  try
+  {
+    lago.poses = lagoPoses(problem);
+  }
+  catch (const std::runtime_error&)
+  {
+    return optimizeGraphProblem(problem, params);  // no LAGO start (a singular system): the guess alone
+  }
+  if (!(robustCost(lago, kernels) < robustCost(problem, kernels))) return optimizeGraphProblem(problem, params);
+  GraphProblem guess = problem;
+  OptimizationReport from_guess = optimizeGraphProblem(guess, params);
+  OptimizationReport from_lago = optimizeGraphProblem(lago, params);
+  const bool lago_wins = from_lago.status != OptimizationStatus::Diverged &&
+                         (from_guess.status == OptimizationStatus::Diverged || from_lago.final_cost < from_guess.final_cost);
+  OptimizationReport& kept = lago_wins ? from_lago : from_guess;
+  const OptimizationReport& other = lago_wins ? from_guess : from_lago;
+  problem.poses = (lago_wins ? lago : guess).poses;
+  kept.lago_start = lago_wins;
+  kept.time_s += other.time_s;
+  kept.iterations += other.iterations;
+  kept.message += lago_wins ? " (from LAGO's start: the guess ended at a higher cost)"
+                            : " (from the guess: LAGO's start ended at a higher cost)";
+  return kept;
+}
+
+}  // namespace swslam::graph
