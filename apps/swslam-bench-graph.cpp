@@ -31,10 +31,42 @@ int main(int argc, char** argv)
                                       false, "", "INI", cmd);
   TCLAP::MultiArg<std::string> only("", "method", "with --false-loops: run only this method (repeatable; "
                                     "least-squares, fixed, gnc, adaptive, ceres-cauchy)", false, "NAME", cmd);
+  TCLAP::MultiArg<std::string> graphs("", "graph", "instead of the grid walk: this pose-graph file (repeatable), "
+                                      "from its own guess", false, "FILE", cmd);
+  TCLAP::MultiArg<double> shares("", "false-share", "with --graph: false loops as this share of the graph's loops "
+                                 "(repeatable; 0.1: one in ten)", false, "S", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
   try
   {
     if (repeats.getValue() < 1) throw std::invalid_argument("--repeats must be >= 1");
+    if (graphs.isSet())
+    {
+      const swslam::graph::GraphOptimizerParams params =
+          config.isSet() ? swslam::app::loadConfig(config.getValue()).system.graph_optimizer
+                         : swslam::graph::GraphOptimizerParams();
+      auto methods = swslam::bench::ourRobustMethods(params);
+#ifdef SWSLAM_WITH_CERES
+      methods.push_back({"ceres-cauchy", [params](const swslam::graph::PoseGraph& g, std::vector<size_t>& off) {
+                           auto run = runCeresWithLoss(g, 1, CeresCauchy{params});
+                           off = swslam::bench::switchedOffEdges(run.result, params);
+                           return run;
+                         }});
+#endif
+      if (only.isSet()) methods = swslam::bench::selectMethods(methods, only.getValue());
+      for (const std::string& file : graphs.getValue())
+      {
+        const swslam::graph::PoseGraph g = swslam::graph::loadGraph(file);
+        std::vector<size_t> counts;
+        for (const double share : shares.isSet() ? shares.getValue() : std::vector<double>{0, 0.1, 0.5, 1.0})
+        {
+          if (!(share >= 0 && share <= 10)) throw std::invalid_argument("--false-share must be in [0, 10]");
+          counts.push_back(static_cast<size_t>(std::lround(share * swslam::graph::loopEdgeCount(g))));
+        }
+        const std::string name = file.substr(file.find_last_of('/') + 1);
+        swslam::bench::falseLoopCases(name, g, counts, params, methods, stdout);
+      }
+      return 0;
+    }
     if (false_loops.isSet())
     {
       swslam::graph::SyntheticGraphOptions o;

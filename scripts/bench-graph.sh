@@ -9,16 +9,36 @@
 # the result against the optimum's, the edges switched off (precision, recall against the
 # false loops), wall and CPU time (median of 3 runs), iterations. Then the solver comparison of
 # swslam-bench-graph (ours vs MRPT vs Ceres).
-# Usage: scripts/bench-graph.sh [NODES]   (needs a build: scripts/build.sh)
+# Before them, the standard public planar graphs of GRAPHS_DIR (../shared/graphs: CSAIL,
+# Intel, MIT, city10000; a .gz is read decompressed), each from its own guess (edge-only files
+# placed along their odometry chain), with false loops as 0, 10 %, 50 % and 100 % of the
+# graph's true loops (../shared/graphs/README.md: x, y in +-10 m, theta in +-pi, pairs at least
+# 10 apart, the median true loop's information), random and grouped.
+# Usage: scripts/bench-graph.sh [NODES] [GRAPHS_DIR]   (needs a build: scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 nodes=${1:-3500}
+graphs_dir=${2:-../shared/graphs}
 bin=build/apps/swslam-bench-graph
 pin=()
 if command -v taskset > /dev/null; then pin=(taskset -c 0); fi
 # CHOLMOD's supernodal factorization (ours and Ceres') asks OpenMP for 4 threads; on the one
 # pinned core they only wait for each other (a fifth of the time of a 3500-node solve).
 export OMP_THREAD_LIMIT=1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+graphs=()
+for f in "$graphs_dir"/*.g2o "$graphs_dir"/*.g2o.gz; do
+  [[ -f $f ]] || continue
+  if [[ $f == *.gz ]]; then zcat "$f" > "$work/$(basename "$f" .gz)"; f=$work/$(basename "$f" .gz); fi
+  graphs+=(--graph "$f")
+done
+if ((${#graphs[@]})); then
+  echo "== false loops on the public graphs of $graphs_dir, one core"
+  "${pin[@]}" "$bin" "${graphs[@]}"
+else
+  echo "== no public graph in $graphs_dir"
+fi
 echo "== false loops on a ${nodes}-node grid walk, one core"
 "${pin[@]}" "$bin" --nodes "$nodes" --false-loops 0 --false-loops 10 --false-loops 100 --false-loops 500 \
   --false-loops 1000 --repeats 3
