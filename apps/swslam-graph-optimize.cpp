@@ -27,12 +27,13 @@ int main(int argc, char** argv)
     TCLAP::ValueArg<long long> iters("", "max-iters", "Levenberg-Marquardt iterations", false, 0, "N", cmd);
     using swslam::graph::KernelSchedule;
     std::vector<std::string> schedules;
-    for (const auto s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive})
+    for (const auto s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive, KernelSchedule::Tls})
       schedules.push_back(swslam::graph::kernelScheduleName(s));
     TCLAP::ValuesConstraint<std::string> schedule_names(schedules);
     TCLAP::ValueArg<std::string> kernel("", "kernel", "fixed: the kernel from the start; gnc: graduated "
                                         "non-convexity down to it; adaptive: shape and scale per edge kind "
-                                        "from the residuals ([graph_optimizer] kernel_schedule)",
+                                        "from the residuals; tls: the outliers decided together, truncated "
+                                        "least squares ([graph_optimizer] kernel_schedule)",
                                         false, "", &schedule_names, cmd);
     if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
@@ -70,7 +71,8 @@ int main(int argc, char** argv)
     const swslam::graph::OptimizationReport r = swslam::graph::optimizeFull(graph, params);
     std::printf("status: %s (%s)\nstart: %s\niterations: %zu\ninitial chi2: %.9g\nfinal chi2: %.9g\n"
                 "active squared residuals: %.9g\ntime: %.3f ms\n",
-                swslam::graph::statusName(r.status), r.message.c_str(), r.lago_start ? "LAGO" : "the file's poses",
+                swslam::graph::statusName(r.status), r.message.c_str(),
+                !r.start.empty() ? r.start.c_str() : r.lago_start ? "LAGO" : "the file's poses",
                 r.iterations, r.initial_chi2, r.final_chi2, r.active_sq_residuals, 1e3 * r.time_s);
     if (r.components > 1)
       std::printf("warning: the graph falls apart into %zu connected components; each one without a FIX "
@@ -84,7 +86,11 @@ int main(int argc, char** argv)
           std::printf("kernel %s: alpha %.2f, c %.4g\n", swslam::graph::edgeKindName(static_cast<swslam::graph::EdgeKind>(kind)),
                       r.kernels[kind].alpha, r.kernels[kind].c);
     // The edges the kernel distrusts.
-    std::printf("switched off: %zu edges (weight below %g)\n", r.switched_off.size(), params.switched_off_weight);
+    if (params.kernel_schedule == KernelSchedule::Tls)
+      std::printf("switched off: %zu edges (beyond their gate: %g for loops, %g for the chain)\n", r.switched_off.size(),
+                  params.outlier_gate, params.outlier_gate_chain);
+    else
+      std::printf("switched off: %zu edges (weight below %g)\n", r.switched_off.size(), params.switched_off_weight);
     for (const size_t k : r.switched_off)
     {
       const auto& e = graph.edge(k);

@@ -42,14 +42,15 @@ std::vector<size_t> switchedOffEdges(const graph::PoseGraph& graph, const graph:
 
 std::vector<RobustMethod> ourRobustMethods(const graph::GraphOptimizerParams& params)
 {
-  graph::GraphOptimizerParams l2 = params, fixed = params, gnc = params, adaptive = params;
+  graph::GraphOptimizerParams l2 = params, fixed = params, gnc = params, adaptive = params, tls = params;
   l2.kernel_alpha = 2;
   l2.kernel_schedule = fixed.kernel_schedule = graph::KernelSchedule::Fixed;
   gnc.robust_consecutive = false;
   gnc.kernel_schedule = graph::KernelSchedule::Gnc;
   adaptive.kernel_schedule = graph::KernelSchedule::Adaptive;
+  tls.kernel_schedule = graph::KernelSchedule::Tls;
   return {oursWith("least-squares", l2), oursWith("fixed", fixed), oursWith("gnc", gnc),
-          oursWith("adaptive", adaptive)};
+          oursWith("adaptive", adaptive), oursWith("tls", tls)};
 }
 
 std::vector<RobustMethod> selectMethods(const std::vector<RobustMethod>& methods, const std::vector<std::string>& names)

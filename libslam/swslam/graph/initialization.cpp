@@ -1,9 +1,12 @@
 #include <swslam/graph/initialization.h>
 
+#include <swslam/graph/truncated.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -133,30 +136,42 @@ std::vector<double> unwrappedRotations(const GraphProblem& problem, const std::v
   return d;
 }
 
-std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
+namespace
 {
-  const std::vector<int> tree = spanningTree(problem);
-  const std::vector<double> d = unwrappedRotations(problem, tree);
+/** The unknowns of the free poses: per pose, its index, -1 for an anchor. */
+std::vector<int> freeIndex(const GraphProblem& problem, const std::vector<int>& tree, int& free)
+{
   const std::vector<char> anchor = anchors(problem, tree);
-  const size_t n = problem.poses.size();
-  std::vector<int> index(n, -1);  // of the free poses' unknowns
-  int free = 0;
-  for (size_t p = 0; p < n; ++p)
+  std::vector<int> index(problem.poses.size(), -1);
+  free = 0;
+  for (size_t p = 0; p < problem.poses.size(); ++p)
     if (!anchor[p]) index[p] = free++;
-  std::vector<geometry::Pose2> poses = problem.poses;
-  if (free == 0) return poses;
+  return index;
+}
 
-  // Headings: one unknown per free pose.
+/** An edge that is no loop (a step of the chain) switched off still weighs this much in robust
+ * LAGO's solves: it holds the poses it alone joins, while weighing nothing against the others. */
+constexpr double kChainWeightFloor = 1e-6;
+
+double effectiveWeight(const GraphProblem::Edge& e, double weight)
+{
+  return e.kind == EdgeKind::Loop ? weight : std::max(weight, kChainWeightFloor);
+}
+
+/** The headings that minimize sum w_k (theta_j - theta_i - d_k)^2 / var_k over the edges of
+ * positive weight, written into `poses` (the anchors' kept). */
+void solveHeadings(const GraphProblem& problem, const std::vector<double>& d, const std::vector<int>& index, int free,
+                   const std::vector<double>& weight, std::vector<geometry::Pose2>& poses)
+{
   std::vector<Eigen::Triplet<double>> a;
   Eigen::VectorXd b = Eigen::VectorXd::Zero(free);
-  std::vector<Eigen::Matrix3d> covariance(problem.edges.size());
   for (size_t k = 0; k < problem.edges.size(); ++k)
   {
     const auto& e = problem.edges[k];
-    covariance[k] = e.information.inverse();
-    const double w = 1 / covariance[k](2, 2);
+    const double wk = effectiveWeight(e, weight[k]);
+    if (wk <= 0) continue;
+    const double w = wk / e.information.inverse()(2, 2);
     const int i = index[e.i], j = index[e.j];
-    // w (theta_j - theta_i - d)^2
     if (i >= 0) a.emplace_back(i, i, w), b(i) -= w * d[k];
     if (j >= 0) a.emplace_back(j, j, w), b(j) += w * d[k];
     if (i >= 0 && j >= 0) a.emplace_back(i, j, -w), a.emplace_back(j, i, -w);
@@ -164,22 +179,40 @@ std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
     if (j >= 0 && i < 0) b(j) += w * poses[e.i].z();
   }
   const Eigen::VectorXd theta = solveFree(a, b, free);
-  for (size_t p = 0; p < n; ++p)
+  for (size_t p = 0; p < poses.size(); ++p)
     if (index[p] >= 0) poses[p].z() = theta(index[p]);
+}
 
-  // Positions, given the headings: two unknowns per free pose.
-  a.clear();
-  b = Eigen::VectorXd::Zero(2 * free);
+/** Edge k's translation residual t_j - t_i - R(theta_i) z and its information turned by theta_i. */
+void translationTerm(const GraphProblem::Edge& e, const std::vector<geometry::Pose2>& poses, Eigen::Vector2d& r,
+                     Eigen::Matrix2d& W, Eigen::Vector2d& c)
+{
+  const Eigen::Matrix2d R = rotation(poses[e.i].z());
+  W = R * e.information.inverse().topLeftCorner<2, 2>().inverse() * R.transpose();
+  c = R * e.z.head<2>();
+  r = poses[e.j].head<2>() - poses[e.i].head<2>() - c;
+}
+
+/** The positions that minimize sum w_k |t_j - t_i - R(theta_i) z_k|^2 under the edges'
+ * translation information turned by theta_i, given the headings in `poses`. */
+void solvePositions(const GraphProblem& problem, const std::vector<int>& index, int free,
+                    const std::vector<double>& weight, std::vector<geometry::Pose2>& poses)
+{
+  std::vector<Eigen::Triplet<double>> a;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * free);
   for (size_t k = 0; k < problem.edges.size(); ++k)
   {
     const auto& e = problem.edges[k];
-    const Eigen::Matrix2d R = rotation(poses[e.i].z());
-    const Eigen::Matrix2d W = R * covariance[k].topLeftCorner<2, 2>().inverse() * R.transpose();
-    const Eigen::Vector2d c = R * e.z.head<2>();  // t_j - t_i should be c
+    const double wk = effectiveWeight(e, weight[k]);
+    if (wk <= 0) continue;
+    Eigen::Vector2d r, c;
+    Eigen::Matrix2d W;
+    translationTerm(e, poses, r, W, c);
+    W *= wk;
     const int i = index[e.i], j = index[e.j];
-    auto block = [&](int r, int col, const Eigen::Matrix2d& m) {
+    auto block = [&](int row, int col, const Eigen::Matrix2d& m) {
       for (int u = 0; u < 2; ++u)
-        for (int v = 0; v < 2; ++v) a.emplace_back(2 * r + u, 2 * col + v, m(u, v));
+        for (int v = 0; v < 2; ++v) a.emplace_back(2 * row + u, 2 * col + v, m(u, v));
     };
     if (i >= 0) block(i, i, W), b.segment<2>(2 * i) -= W * c;
     if (j >= 0) block(j, j, W), b.segment<2>(2 * j) += W * c;
@@ -188,14 +221,116 @@ std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
     if (j >= 0 && i < 0) b.segment<2>(2 * j) += W * poses[e.i].head<2>();
   }
   const Eigen::VectorXd t = solveFree(a, b, 2 * free);
-  for (size_t p = 0; p < n; ++p)
+  for (size_t p = 0; p < poses.size(); ++p)
     if (index[p] >= 0) poses[p].head<2>() = t.segment<2>(2 * index[p]);
+}
+
+/** Each edge's rotation unwrapped by the multiple of 2 pi that agrees with the headings of `poses`. */
+std::vector<double> unwrappedAt(const GraphProblem& problem, const std::vector<geometry::Pose2>& poses)
+{
+  std::vector<double> d(problem.edges.size());
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+  {
+    const auto& e = problem.edges[k];
+    d[k] = e.z.z() + 2 * M_PI * std::round((poses[e.j].z() - poses[e.i].z() - e.z.z()) / (2 * M_PI));
+  }
+  return d;
+}
+
+/** The chi-square quantiles at 0.999 of one and two degrees of freedom: robust LAGO's gates on
+ * a loop's heading and translation residuals (a proposal only: the decision's own gate is
+ * outlier_gate). */
+constexpr double kHeadingGate2 = 10.83;
+constexpr double kTranslationGate2 = 13.82;
+/** Robust LAGO unwraps the rotations again at its headings at most this many times. */
+constexpr int kMaxUnwraps = 2;
+}  // namespace
+
+std::vector<double> lagoHeadings(const GraphProblem& problem)
+{
+  const std::vector<int> tree = spanningTree(problem);
+  int free = 0;
+  const std::vector<int> index = freeIndex(problem, tree, free);
+  std::vector<geometry::Pose2> poses = problem.poses;
+  if (free > 0) solveHeadings(problem, unwrappedRotations(problem, tree), index, free, std::vector<double>(problem.edges.size(), 1.0), poses);
+  std::vector<double> theta(poses.size());
+  for (size_t p = 0; p < poses.size(); ++p) theta[p] = poses[p].z();
+  return theta;
+}
+
+std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
+{
+  const std::vector<int> tree = spanningTree(problem);
+  int free = 0;
+  const std::vector<int> index = freeIndex(problem, tree, free);
+  std::vector<geometry::Pose2> poses = problem.poses;
+  if (free == 0) return poses;
+  const std::vector<double> all(problem.edges.size(), 1.0);
+  solveHeadings(problem, unwrappedRotations(problem, tree), index, free, all, poses);
+  solvePositions(problem, index, free, all, poses);
   for (auto& p : poses) p.z() = std::remainder(p.z(), 2 * M_PI);
   return poses;
 }
 
+RobustLago robustLagoPoses(const GraphProblem& problem, const std::vector<char>& use, const OutlierGates& gates)
+{
+  const size_t m = problem.edges.size();
+  // The tree along the edges that are no loops where they reach (the odometry chain): a false
+  // loop in the tree would unwrap every rotation against its wrong heading.
+  GraphProblem trusted = problem;
+  for (auto& e : trusted.edges)
+    if (e.kind == EdgeKind::Loop) e.information *= 1e-12;
+  const std::vector<int> tree = spanningTree(trusted);
+  int free = 0;
+  const std::vector<int> index = freeIndex(problem, tree, free);
+  RobustLago out{problem.poses, std::vector<char>(m, 0)};
+  if (free == 0) return out;
+  std::vector<char> robust(m);
+  // The gates of one and two degrees of freedom, each kind's scaled as its gate of three.
+  std::vector<double> heading_c2(m), translation_c2(m);
+  for (size_t k = 0; k < m; ++k)
+  {
+    robust[k] = problem.edges[k].robust;
+    const double scale = gates.of(problem.edges[k]) / gates.loop;  // an edge of the chain: wider
+    heading_c2[k] = kHeadingGate2 * scale * scale;
+    translation_c2[k] = kTranslationGate2 * scale * scale;
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> d = unwrappedRotations(problem, tree);
+  std::vector<double> w;
+  for (int pass = 0; pass <= kMaxUnwraps; ++pass)
+  {
+    w = graduatedTls(
+        robust, heading_c2, 0, [&](const std::vector<double>& wk) { solveHeadings(problem, d, index, free, wk, out.poses); },
+        [&](size_t k) {
+          const auto& e = problem.edges[k];
+          if (!use[k]) return inf;
+          const double r = out.poses[e.j].z() - out.poses[e.i].z() - d[k];
+          return r * r / e.information.inverse()(2, 2);
+        });
+    const std::vector<double> again = unwrappedAt(problem, out.poses);
+    if (again == d) break;
+    d = again;
+  }
+  const std::vector<double> headings = w;
+  w = graduatedTls(
+      robust, translation_c2, 0, [&](const std::vector<double>& wk) { solvePositions(problem, index, free, wk, out.poses); },
+      [&](size_t k) {
+        if (headings[k] < 0.5) return inf;
+        Eigen::Vector2d r, c;
+        Eigen::Matrix2d W;
+        translationTerm(problem.edges[k], out.poses, r, W, c);
+        return r.dot(W * r);
+      });
+  for (size_t k = 0; k < m; ++k) out.inliers[k] = w[k] >= 0.5;
+  for (auto& p : out.poses) p.z() = std::remainder(p.z(), 2 * M_PI);
+  return out;
+}
+
 OptimizationReport optimizeFromBestStart(GraphProblem& problem, const GraphOptimizerParams& params)
 {
+  // Tls proposes LAGO's poses itself, among others.
+  if (params.kernel_schedule == KernelSchedule::Tls) return optimizeGraphProblem(problem, params);
   const KindKernels kernels = uniformKernels(params.kernel());
   GraphProblem lago = problem;
   try

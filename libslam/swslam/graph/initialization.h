@@ -9,6 +9,7 @@
 // heading has drifted by tens of degrees.
 
 #include <swslam/graph/optimizer.h>
+#include <swslam/graph/truncated.h>
 
 #include <vector>
 
@@ -32,6 +33,25 @@ std::vector<double> unwrappedRotations(const GraphProblem& problem, const std::v
  * pose of each connected component without one. Throws std::invalid_argument for a problem
  * checkProblem() refuses. */
 std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem);
+
+/** LAGO's headings alone (the first of its two solves), per pose. */
+std::vector<double> lagoHeadings(const GraphProblem& problem);
+
+/** LAGO with the robustified edges decided by graduated non-convexity for truncated least
+ * squares (truncated.h), each of its linear solves the non-minimal solver: the headings first,
+ * their rotations unwrapped along the tree of the edges not robustified where those reach (the
+ * odometry chain), a loop gated at chi-square 10.83 (one degree of freedom, 0.999, and an edge of
+ * the chain in proportion to its larger gate); unwrapped again at the result and decided again
+ * while that changes a multiple of 2 pi (twice at most); then the positions over the edges
+ * whose heading was kept, a loop gated at 13.82 (two degrees). Edges
+ * not in `use` take no part. Returns the poses and the robustified edges kept (and every edge
+ * not robustified). */
+struct RobustLago
+{
+  std::vector<geometry::Pose2> poses;
+  std::vector<char> inliers;  ///< per edge
+};
+RobustLago robustLagoPoses(const GraphProblem& problem, const std::vector<char>& use, const OutlierGates& gates);
 
 /** Optimizes a whole problem (optimizeGraphProblem) from its own poses and, when LAGO's poses
  * start at a lower cost under params' kernel (the guess is poor: an odometry chain whose

@@ -6,12 +6,15 @@
 #include <swslam/graph/sliding_window.h>
 #include <swslam/graph/synthetic.h>
 
+#include "graph_test_support.h"
+
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <set>
 
 using namespace swslam::graph;
 using swslam::geometry::Pose2;
@@ -196,4 +199,28 @@ TEST(LagoInitialization, TheStartDoesNotDependOnTheGuessAndLeadsToTheOptimum)
   const OptimizationReport kept = optimizeFromBestStart(good, l2);
   EXPECT_FALSE(kept.lago_start);
   EXPECT_NEAR(kept.final_chi2, optimum, 1e-6 * optimum);
+}
+
+TEST(LagoInitialization, RobustLagoKeepsTheTrueLoopsAndDropsRandomFalseOnes)
+{
+  SyntheticGraph s = swslam::test::robustWalk();
+  const std::vector<size_t> added = swslam::test::addAsManyFalseLoops(s.graph, 3);
+  const std::set<size_t> false_loops(added.begin(), added.end());
+  const GraphSubproblem sub = fullSubproblem(s.graph, GraphOptimizerParams{});
+  const std::vector<char> every(sub.problem.edges.size(), 1);
+  const RobustLago r = robustLagoPoses(sub.problem, every, OutlierGates{});
+  size_t false_kept = 0, true_dropped = 0, true_loops = 0;
+  for (size_t k = 0; k < sub.problem.edges.size(); ++k)
+  {
+    const bool is_false = false_loops.count(sub.edge_indices[k]) > 0;
+    false_kept += is_false && r.inliers[k];
+    if (!is_false && sub.problem.edges[k].kind == EdgeKind::Loop) ++true_loops, true_dropped += !r.inliers[k];
+  }
+  EXPECT_LT(false_kept, 0.02 * added.size()) << false_kept << " of " << added.size();
+  EXPECT_LT(true_dropped, 0.05 * true_loops) << true_dropped << " of " << true_loops;
+  // Its poses are near the truth (LAGO's approximation, not the optimum).
+  double worst = 0;
+  for (size_t n = 0; n < sub.node_ids.size(); ++n)
+    worst = std::max(worst, (r.poses[n].head<2>() - s.truth[sub.node_ids[n]].head<2>()).norm());
+  EXPECT_LT(worst, 1.0);
 }

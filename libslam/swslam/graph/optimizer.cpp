@@ -3,6 +3,7 @@
 #include <swslam/graph/adaptive_kernel.h>
 #include <swslam/graph/coupled_system.h>
 #include <swslam/graph/normal_equations.h>
+#include <swslam/graph/outlier_decision.h>
 
 #include <mrpt/system/CTicTac.h>
 
@@ -685,6 +686,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
 
 OptimizationReport optimizeGraphProblem(GraphProblem& problem, const GraphOptimizerParams& params)
 {
+  if (params.kernel_schedule == KernelSchedule::Tls) return optimizeTruncated(problem, params);
   OptimizationReport rep = params.kernel_schedule == KernelSchedule::Fixed
                                ? optimizeWithKernels(problem, params, uniformKernels(params.kernel()))
                                : optimizeGraduated(problem, params);

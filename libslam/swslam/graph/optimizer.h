@@ -65,6 +65,8 @@ struct OptimizationReport
   std::vector<size_t> switched_off;  ///< robustified edges whose final weight is below switched_off_weight
   /** A whole graph's optimization started from LAGO's poses, not the guess (initialization.h). */
   bool lago_start = false;
+  /** Tls: the proposal whose inliers won (outlier_decision.h). */
+  std::string start;
   std::string message;          ///< why it stopped, in words
 };
 

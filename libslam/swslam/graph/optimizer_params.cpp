@@ -28,13 +28,14 @@ const char* kernelScheduleName(KernelSchedule s)
     case KernelSchedule::Fixed: return "fixed";
     case KernelSchedule::Gnc: return "gnc";
     case KernelSchedule::Adaptive: return "adaptive";
+    case KernelSchedule::Tls: return "tls";
   }
   return "?";
 }
 
 std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name)
 {
-  for (const KernelSchedule s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive})
+  for (const KernelSchedule s : {KernelSchedule::Fixed, KernelSchedule::Gnc, KernelSchedule::Adaptive, KernelSchedule::Tls})
     if (name == kernelScheduleName(s)) return s;
   return std::nullopt;
 }
@@ -53,8 +54,8 @@ const common::ParamTable<GraphOptimizerParams>& GraphOptimizerParams::table()
                 "Barron kernel shape: 2 L2, 1 L1-like, 0 Cauchy, -2 Geman-McClure, -inf Welsch")
           .real("kernel_c", &P::kernel_c, "", above(0), "kernel scale, in standard deviations of r = sqrt(e' Omega e)")
           .choice("kernel_schedule", &P::kernel_schedule,
-                  {{"fixed", KernelSchedule::Fixed}, {"gnc", KernelSchedule::Gnc}, {"adaptive", KernelSchedule::Adaptive}},
-                  "fixed: the kernel from the start; gnc: graduated from alpha 1 down; adaptive: shapes estimated per edge kind")
+                  {{"fixed", KernelSchedule::Fixed}, {"gnc", KernelSchedule::Gnc}, {"adaptive", KernelSchedule::Adaptive}, {"tls", KernelSchedule::Tls}},
+                  "fixed: the kernel from the start; gnc: graduated from alpha 1 down; adaptive: shapes estimated per edge kind; tls: a whole graph's outliers decided together")
           .real("gnc_alpha_step", &P::gnc_alpha_step, "", between(0.05, 10), "gnc, adaptive: the shape's bound falls by this each stage")
           .integer("gnc_stage_iterations", &P::gnc_stage_iterations, "", atLeast(1), "gnc, adaptive: LM iterations per stage")
           .real("adaptive_alpha_min", &P::adaptive_alpha_min, "", between(-100, 2), "adaptive: the lowest shape estimated...")
@@ -64,6 +65,9 @@ const common::ParamTable<GraphOptimizerParams>& GraphOptimizerParams::table()
                 "adaptive: the residuals' density is truncated at this many scales")
           .real("switched_off_weight", &P::switched_off_weight, "", common::Range{0, 1, false, true},
                 "a robustified edge whose final weight is below this is reported as switched off")
+          .real("outlier_gate", &P::outlier_gate, "", above(0),
+                "tls: a loop beyond this residual (standard deviations) is an outlier...")
+          .real("outlier_gate_chain", &P::outlier_gate_chain, "", above(0), "...and an edge of the odometry chain beyond this")
           .flag("robust_consecutive", &P::robust_consecutive, "robustify consecutive edges (the paper's choice)")
           .flag("robust_dense_neighbour", &P::robust_dense_neighbour, "robustify dense-neighbour edges")
           .flag("robust_loop", &P::robust_loop, "robustify loop-closure edges")

@@ -24,15 +24,19 @@ namespace swslam::graph
  * - Adaptive: as Gnc, but each stage's shape per edge kind is estimated from the residuals
  *   (Chebrolu et al., RA-L 2021): the shape that fits them best, held within the stage's
  *   bounds; the kernels at the result also take the scale kernel_c times a robust residual
- *   scale. */
+ *   scale;
+ * - Tls: truncated least squares for a whole graph, its robustified edges decided together
+ *   (outlier_decision.h): the lowest truncated cost among proposed inlier sets, each refined
+ *   by least squares on the edges within outlier_gate. */
 enum class KernelSchedule
 {
   Fixed,
   Gnc,
-  Adaptive
+  Adaptive,
+  Tls
 };
 const char* kernelScheduleName(KernelSchedule s);
-/** "fixed", "gnc" or "adaptive"; nothing for another name. */
+/** "fixed", "gnc", "adaptive" or "tls"; nothing for another name. */
 std::optional<KernelSchedule> kernelScheduleFromName(const std::string& name);
 
 /** Section [graph_optimizer]: declared in table() (optimizer_params.cpp). */
@@ -60,6 +64,15 @@ struct GraphOptimizerParams
   /** A robustified edge whose final weight (1 for an inlier) is below this is reported as
    * switched off (OptimizationReport::switched_off). */
   double switched_off_weight = 0.1;
+  /** tls: a robustified loop is an outlier beyond this residual r = sqrt(e^T Omega e). A true
+   * edge whose noise is as its information says lies beyond 5 with probability 1.2e-5
+   * (chi-square, three degrees of freedom); at 4.03 (0.999) the decision switched off one true
+   * loop in a thousand with the false ones. */
+  double outlier_gate = 5.0;
+  /** tls: the same for an edge of the chain (consecutive, dense-neighbour, odometry prior):
+   * larger, since switching one off costs its square, and with the loops' gate a graph could
+   * break its chain to take in a group of false loops more cheaply than keep it (truncated.h). */
+  double outlier_gate_chain = 12.0;
 
   // Which edge kinds are robustified (paper: consecutive constraints; loops too, see issue 5).
   bool robust_consecutive = true;

@@ -1,0 +1,191 @@
+#include <swslam/graph/loop_support.h>
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace swslam::graph
+{
+namespace
+{
+using mrpt::poses::CPosePDFGaussian;
+
+/** An edge's measurement as a Gaussian on (x, y, theta) in the frame of its first pose. The
+ * information weighs the error in the measurement's own frame (se2_error.h), so the
+ * covariance of the translation is turned by the measurement's heading. */
+CPosePDFGaussian measured(const GraphProblem::Edge& e)
+{
+  Eigen::Matrix3d G = Eigen::Matrix3d::Identity();
+  const double c = std::cos(e.z.z()), s = std::sin(e.z.z());
+  G.topLeftCorner<2, 2>() << c, -s, s, c;
+  const Eigen::Matrix3d cov = G * e.information.inverse() * G.transpose();
+  return CPosePDFGaussian(mrpt::poses::CPose2D(e.z.x(), e.z.y(), e.z.z()), mrpt::math::CMatrixDouble33(cov));
+}
+
+CPosePDFGaussian inverted(const CPosePDFGaussian& p)
+{
+  CPosePDFGaussian out;
+  p.inverse(out);
+  return out;
+}
+
+/** The chain's relative pose from pose `from` to pose `to` (same chain), composed step by step. */
+CPosePDFGaussian alongChain(const GraphProblem& problem, const OdometryChain& chain, int from, int to)
+{
+  CPosePDFGaussian t;  // identity, zero covariance
+  int p = from;
+  while (p != to)
+  {
+    const bool forward = chain.position[to] > chain.position[p];
+    const auto& e = problem.edges[forward ? chain.next[p] : chain.previous[p]];
+    t += forward ? measured(e) : inverted(measured(e));
+    p = forward ? e.j : e.i;
+  }
+  return t;
+}
+
+bool near(const OdometryChain& chain, int a, int b, int window)
+{
+  return chain.chain[a] >= 0 && chain.chain[a] == chain.chain[b] && std::abs(chain.position[a] - chain.position[b]) <= window;
+}
+}  // namespace
+
+OdometryChain odometryChain(const GraphProblem& problem)
+{
+  const size_t n = problem.poses.size();
+  OdometryChain c;
+  c.chain.assign(n, -1);
+  c.position.assign(n, 0);
+  c.next.assign(n, -1);
+  c.previous.assign(n, -1);
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+  {
+    const auto& e = problem.edges[k];
+    if (e.kind != EdgeKind::Consecutive || c.next[e.i] >= 0 || c.previous[e.j] >= 0) continue;
+    c.next[e.i] = static_cast<int>(k);
+    c.previous[e.j] = static_cast<int>(k);
+  }
+  int chains = 0;
+  for (size_t p = 0; p < n; ++p)
+  {
+    if (c.previous[p] >= 0 || c.next[p] < 0) continue;
+    // A chain's start: follow it (a cycle of consecutive edges has no start and stays off).
+    int at = static_cast<int>(p), pos = 0;
+    while (at >= 0 && c.chain[at] < 0)
+    {
+      c.chain[at] = chains;
+      c.position[at] = pos++;
+      at = c.next[at] >= 0 ? problem.edges[c.next[at]].j : -1;
+    }
+    ++chains;
+  }
+  return c;
+}
+
+bool isLoopCandidate(const GraphProblem& problem, const OdometryChain& chain, size_t k)
+{
+  const auto& e = problem.edges[k];
+  return e.robust && chain.next[e.i] != static_cast<int>(k);
+}
+
+double cycleChi2(const GraphProblem& problem, const OdometryChain& chain, size_t a, size_t b,
+                 const LoopSupportOptions& options)
+{
+  const auto& ea = problem.edges[a];
+  const auto& eb = problem.edges[b];
+  // b runs from k to l; take it the way that puts k near a's start.
+  bool reversed = false;
+  if (!(near(chain, ea.i, eb.i, options.window) && near(chain, ea.j, eb.j, options.window)))
+  {
+    if (!(near(chain, ea.i, eb.j, options.window) && near(chain, ea.j, eb.i, options.window))) return -1;
+    reversed = true;
+  }
+  const int k = reversed ? eb.j : eb.i, l = reversed ? eb.i : eb.j;
+  // i -> k along the chain, k -> l by loop b, l -> j along the chain: loop a's prediction.
+  CPosePDFGaussian cycle = alongChain(problem, chain, ea.i, k);
+  cycle += reversed ? inverted(measured(eb)) : measured(eb);
+  cycle += alongChain(problem, chain, l, ea.j);
+  const CPosePDFGaussian za = measured(ea);
+  Eigen::Vector3d d(cycle.mean.x() - za.mean.x(), cycle.mean.y() - za.mean.y(),
+                    mrpt::math::wrapToPi(cycle.mean.phi() - za.mean.phi()));
+  const Eigen::Matrix3d S = cycle.cov.asEigen() + za.cov.asEigen();
+  return d.dot(S.ldlt().solve(d));
+}
+
+namespace
+{
+/** Calls f(a, b) once for each pair of loop candidates whose ends lie within the window of
+ * each other (cycleChi2 >= 0), after marking every loop candidate with 0 in `marks` (-1 the
+ * other edges). */
+template <typename F>
+void forNeighbours(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options,
+                   std::vector<int>& marks, F f)
+{
+  marks.assign(problem.edges.size(), -1);
+  // Loops ordered by their earlier end's chain and position: the neighbours of one are a
+  // stretch of this order.
+  std::vector<size_t> loops;
+  auto key = [&](size_t k) {
+    const auto& e = problem.edges[k];
+    const int first = chain.position[e.i] <= chain.position[e.j] || chain.chain[e.i] != chain.chain[e.j] ? e.i : e.j;
+    return std::make_pair(chain.chain[first], chain.position[first]);
+  };
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+    if (isLoopCandidate(problem, chain, k))
+    {
+      marks[k] = 0;
+      if (chain.chain[problem.edges[k].i] >= 0 && chain.chain[problem.edges[k].j] >= 0) loops.push_back(k);
+    }
+  std::sort(loops.begin(), loops.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
+  for (size_t u = 0; u < loops.size(); ++u)
+    for (size_t v = u + 1; v < loops.size(); ++v)
+    {
+      const auto [cu, pu] = key(loops[u]);
+      const auto [cv, pv] = key(loops[v]);
+      if (cv != cu || pv > pu + options.window) break;
+      const double chi2 = cycleChi2(problem, chain, loops[u], loops[v], options);
+      if (chi2 >= 0) f(loops[u], loops[v], chi2);
+    }
+}
+
+int findRoot(std::vector<int>& parent, int a)
+{
+  while (parent[a] != a) a = parent[a] = parent[parent[a]];
+  return a;
+}
+}  // namespace
+
+std::vector<int> loopSupport(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options)
+{
+  std::vector<int> support;
+  forNeighbours(problem, chain, options, support, [&](size_t a, size_t b, double chi2) {
+    if (chi2 < options.gate) ++support[a], ++support[b];
+  });
+  return support;
+}
+
+std::vector<int> loopRuns(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options)
+{
+  std::vector<int> runs;
+  std::vector<int> parent(problem.edges.size());
+  for (size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
+  forNeighbours(problem, chain, options, runs, [&](size_t a, size_t b, double chi2) {
+    if (chi2 < options.gate) parent[findRoot(parent, static_cast<int>(a))] = findRoot(parent, static_cast<int>(b));
+  });
+  std::vector<int> number(problem.edges.size(), -1);
+  int count = 0;
+  for (size_t k = 0; k < runs.size(); ++k)
+  {
+    if (runs[k] < 0) continue;
+    int& n = number[findRoot(parent, static_cast<int>(k))];
+    if (n < 0) n = count++;
+    runs[k] = n;
+  }
+  return runs;
+}
+
+}  // namespace swslam::graph

@@ -1,0 +1,305 @@
+#include <swslam/graph/outlier_decision.h>
+
+#include <swslam/graph/initialization.h>
+#include <swslam/graph/loop_support.h>
+#include <swslam/graph/truncated.h>
+
+#include <mrpt/system/CTicTac.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace swslam::graph
+{
+namespace
+{
+/** Rounds of least squares on the edges within the gate, at most. */
+constexpr int kMaxRounds = 5;
+/** Robust LAGO also over every loop only if at most this many have no neighbour that supports
+ * them: each loop between far nodes fills the factor of its linear solves in (city10000 with
+ * 10,688 random false loops: seconds per solve, against milliseconds without them). */
+constexpr size_t kMaxUnsupportedForLago = 1000;
+/** Runs of loops tried without their kept loops, at most. */
+constexpr size_t kMaxRunTrials = 10;
+
+GraphProblem subset(const GraphProblem& problem, const std::vector<char>& inliers)
+{
+  GraphProblem kept = problem;
+  kept.edges.clear();
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+    if (inliers[k] || !problem.edges[k].robust) kept.edges.push_back(problem.edges[k]);
+  return kept;
+}
+
+GraphOptimizerParams leastSquares(const GraphOptimizerParams& params)
+{
+  GraphOptimizerParams l2 = params;
+  l2.kernel_schedule = KernelSchedule::Fixed;
+  l2.kernel_alpha = 2;
+  return l2;
+}
+
+struct Proposal
+{
+  std::string name;
+  std::vector<char> inliers;
+  std::vector<geometry::Pose2> start;
+};
+
+/** GNC for TLS from the guess: each round a few LM iterations on the edges' information times
+ * their weight. */
+std::vector<char> guessInliers(const GraphProblem& problem, const OutlierGates& gates, const GraphOptimizerParams& params)
+{
+  const size_t m = problem.edges.size();
+  GraphOptimizerParams step = leastSquares(params);
+  step.max_iterations = std::min<size_t>(params.max_iterations, params.gnc_stage_iterations);
+  GraphProblem at = problem;
+  std::vector<char> robust(m);
+  for (size_t k = 0; k < m; ++k) robust[k] = problem.edges[k].robust;
+  std::vector<double> c2(m);
+  for (size_t k = 0; k < m; ++k) c2[k] = gates.of(problem.edges[k]) * gates.of(problem.edges[k]);
+  std::vector<double> r = robustResiduals(at);
+  const std::vector<double> w = graduatedTls(
+      robust, c2, 1.0,
+      [&](const std::vector<double>& wk) {
+        GraphProblem weighted = at;
+        weighted.edges.clear();
+        for (size_t k = 0; k < m; ++k)
+          if (wk[k] > 0)
+          {
+            weighted.edges.push_back(at.edges[k]);
+            weighted.edges.back().information *= wk[k];
+          }
+        optimizeGraphProblem(weighted, step);
+        at.poses = weighted.poses;
+        r = robustResiduals(at);
+      },
+      [&](size_t k) { return r[k] * r[k]; });
+  std::vector<char> in(m);
+  for (size_t k = 0; k < m; ++k) in[k] = w[k] >= 0.5;
+  return in;
+}
+
+/** Whether LAGO's headings fit every robustified edge's rotation within its gate. */
+bool headingsFitEveryEdge(const GraphProblem& problem, const OutlierGates& gates)
+{
+  const std::vector<double> theta = lagoHeadings(problem);
+  for (const auto& e : problem.edges)
+  {
+    if (!e.robust) continue;
+    const double r = std::remainder(theta[e.j] - theta[e.i] - e.z.z(), 2 * M_PI);
+    if (r * r / e.information.inverse()(2, 2) > gates.of(e) * gates.of(e)) return false;
+  }
+  return true;
+}
+
+std::vector<geometry::Pose2> lagoOrGuess(const GraphProblem& problem)
+{
+  try
+  {
+    return lagoPoses(problem);
+  }
+  catch (const std::runtime_error&)
+  {
+    return problem.poses;  // a singular system (a piece held by nothing): the guess
+  }
+}
+}  // namespace
+
+OutlierGates outlierGates(const GraphOptimizerParams& params)
+{
+  return {params.outlier_gate, params.outlier_gate_chain};
+}
+
+OptimizationReport refineInliers(GraphProblem& problem, std::vector<char>& inliers, const OutlierGates& gates,
+                                 const GraphOptimizerParams& params)
+{
+  const GraphOptimizerParams l2 = leastSquares(params);
+  OptimizationReport total;
+  for (int round = 0; round < kMaxRounds; ++round)
+  {
+    GraphProblem kept = subset(problem, inliers);
+    const OptimizationReport r = optimizeGraphProblem(kept, l2);
+    total.iterations += r.iterations;
+    total.accepted_steps += r.accepted_steps;
+    total.status = r.status;
+    total.message = r.message;
+    if (r.status == OptimizationStatus::Diverged) break;
+    problem.poses = kept.poses;
+    const std::vector<double> res = robustResiduals(problem);
+    std::vector<char> again(inliers.size());
+    for (size_t k = 0; k < again.size(); ++k) again[k] = !problem.edges[k].robust || res[k] <= gates.of(problem.edges[k]);
+    if (again == inliers) break;
+    inliers.swap(again);
+  }
+  return total;
+}
+
+namespace
+{
+/** A proposal refined: its poses, inliers and truncated cost. */
+struct Candidate
+{
+  std::string name;
+  std::vector<geometry::Pose2> poses;
+  std::vector<char> inliers;
+  double cost = std::numeric_limits<double>::infinity();
+  OptimizationReport solve;  ///< its refinement's
+};
+
+/** Refines a proposal (refineInliers) and scores it; the cost stays infinite if a solve diverged. */
+Candidate refined(const GraphProblem& problem, Proposal p, const OutlierGates& gates, const GraphOptimizerParams& params,
+                  size_t& iterations)
+{
+  GraphProblem at = problem;
+  at.poses = p.start;
+  Candidate c;
+  c.name = p.name;
+  c.inliers = std::move(p.inliers);
+  c.solve = refineInliers(at, c.inliers, gates, params);
+  iterations += c.solve.iterations;
+  c.poses = at.poses;
+  if (c.solve.status != OptimizationStatus::Diverged) c.cost = truncatedCost(at, gates);
+  return c;
+}
+
+/** Every edge from LAGO's poses or the guess, whichever starts at the lower chi2, if LAGO's
+ * headings fit every edge within its gate (a graph with no outlier); nothing otherwise. */
+std::vector<Proposal> everyEdge(const GraphProblem& problem, const OutlierGates& gates)
+{
+  if (!headingsFitEveryEdge(problem, gates)) return {};
+  GraphProblem lago = problem;
+  lago.poses = lagoOrGuess(problem);
+  const bool from_lago = graphChi2(lago) < graphChi2(problem);
+  return {{from_lago ? "every edge, from LAGO" : "every edge", std::vector<char>(problem.edges.size(), 1),
+           from_lago ? lago.poses : problem.poses}};
+}
+
+/** The other proposals: the guess's inliers, the locally consistent loops, robust LAGO's. */
+std::vector<Proposal> decidedProposals(const GraphProblem& problem, const std::vector<int>& support,
+                                       const OutlierGates& gates, const GraphOptimizerParams& params)
+{
+  std::vector<Proposal> out;
+  out.push_back({"the guess's inliers", guessInliers(problem, gates, params), problem.poses});
+  std::vector<char> consistent(problem.edges.size());
+  for (size_t k = 0; k < consistent.size(); ++k) consistent[k] = support[k] != 0;  // -1: no loop candidate
+  out.push_back({"the locally consistent loops", consistent, lagoOrGuess(subset(problem, consistent))});
+  // Robust LAGO over the consistent loops, and over every loop where the loops no neighbour
+  // supports are few (isolated true loops: a sparse graph, a tracking error only loops far
+  // apart reveal).
+  size_t unsupported = 0;
+  for (const int s : support) unsupported += s == 0;
+  std::vector<std::pair<std::string, std::vector<char>>> uses{{"robust LAGO's inliers", consistent}};
+  if (unsupported > 0 && unsupported <= kMaxUnsupportedForLago)
+    uses.push_back({"robust LAGO's inliers of every loop", std::vector<char>(problem.edges.size(), 1)});
+  for (auto& [name, use] : uses)
+    try
+    {
+      RobustLago robust = robustLagoPoses(problem, use, gates);
+      out.push_back({name, std::move(robust.inliers), std::move(robust.poses)});
+    }
+    catch (const std::runtime_error&)
+    {
+      // A singular linear system (a piece held by switched-off edges only): no such proposal.
+    }
+  return out;
+}
+
+/** The runs of loops (loopRuns) worth trying without their kept loops, the most strained first
+ * (the largest mean squared residual of their kept loops: a group of false loops the graph bent
+ * itself to take in), at most kMaxRunTrials. Without a run its loops cost their gates, and the
+ * other edges at least nothing: a run whose loops' margin below their gates exceeds the chi2 of
+ * the other kept edges cannot lower the cost, and is not tried. */
+std::vector<int> strainedRuns(const GraphProblem& problem, const Candidate& best, const std::vector<int>& runs,
+                              const OutlierGates& gates)
+{
+  int count = 0;
+  for (const int r : runs) count = std::max(count, r + 1);
+  std::vector<double> strain(count, 0), margin(count, 0);
+  std::vector<int> kept(count, 0);
+  GraphProblem at = problem;
+  at.poses = best.poses;
+  const std::vector<double> res = robustResiduals(at);
+  const double kept_chi2 = graphChi2(subset(at, best.inliers));
+  for (size_t k = 0; k < runs.size(); ++k)
+  {
+    if (runs[k] < 0 || !best.inliers[k]) continue;
+    const double g = gates.of(problem.edges[k]);
+    strain[runs[k]] += res[k] * res[k];
+    margin[runs[k]] += g * g - res[k] * res[k];
+    ++kept[runs[k]];
+  }
+  std::vector<int> order;
+  for (int run = 0; run < count; ++run)
+    if (kept[run] > 0 && margin[run] < kept_chi2 - strain[run]) order.push_back(run);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return strain[a] / kept[a] > strain[b] / kept[b]; });
+  if (order.size() > kMaxRunTrials) order.resize(kMaxRunTrials);
+  return order;
+}
+}  // namespace
+
+OptimizationReport optimizeTruncated(GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  mrpt::system::CTicTac timer;
+  params.check();
+  checkProblem(problem);
+  const size_t m = problem.edges.size();
+  const OutlierGates gates = outlierGates(params);
+  size_t iterations = 0, proposals = 0;
+  const OdometryChain chain = odometryChain(problem);
+  const std::vector<int> runs = loopRuns(problem, chain);
+  Candidate best;
+  auto consider = [&](Proposal p) {
+    ++proposals;
+    Candidate c = refined(problem, std::move(p), gates, params, iterations);
+    if (c.cost < best.cost) best = std::move(c);
+  };
+  for (Proposal& p : everyEdge(problem, gates)) consider(std::move(p));
+  // Every edge within its gate at the least-squares optimum: nothing to decide.
+  const bool clean = best.cost < std::numeric_limits<double>::infinity() &&
+                     std::all_of(best.inliers.begin(), best.inliers.end(), [](char in) { return in != 0; });
+  if (!clean)
+  {
+    for (Proposal& p : decidedProposals(problem, loopSupport(problem, chain), gates, params)) consider(std::move(p));
+    // A run of loops that agree with each other (a group of false loops of which a few fit)
+    // tried without its kept loops; the lower cost stays.
+    for (const int run : best.name.empty() ? std::vector<int>{} : strainedRuns(problem, best, runs, gates))
+    {
+      std::vector<char> without = best.inliers;
+      for (size_t k = 0; k < m; ++k)
+        if (runs[k] == run) without[k] = 0;
+      Candidate c = refined(problem, {best.name + ", less a run of loops", std::move(without), best.poses}, gates, params,
+                            iterations);
+      if (c.cost < best.cost) best = std::move(c);
+    }
+  }
+  OptimizationReport rep = best.solve;
+  rep.edges = m;
+  rep.iterations = iterations;
+  rep.initial_chi2 = graphChi2(problem);
+  rep.initial_cost = truncatedCost(problem, gates);
+  rep.kernels = uniformKernels({2.0, params.kernel_c});
+  rep.time_s = timer.Tac();
+  if (best.name.empty())
+  {
+    rep.status = OptimizationStatus::Diverged;
+    rep.message = "truncated least squares: the least-squares solve of every proposal diverged";
+    return rep;
+  }
+  problem.poses = best.poses;
+  rep.start = best.name;
+  rep.final_chi2 = graphChi2(problem);
+  rep.final_cost = best.cost;
+  const std::vector<double> res = robustResiduals(problem);
+  for (size_t k = 0; k < m; ++k)
+    if (problem.edges[k].robust && res[k] > gates.of(problem.edges[k])) rep.switched_off.push_back(k);
+  rep.message = "truncated least squares from " + best.name + " (" + std::to_string(proposals) +
+                " proposals): " + best.solve.message;
+  return rep;
+}
+
+}  // namespace swslam::graph

@@ -1,0 +1,100 @@
+// Outliers decided together (outlier_decision.h) from the odometry guess of a synthetic walk:
+// with no outlier, the least-squares optimum and nothing switched off; with as many false loops
+// as true ones, random or grouped, the optimum of the graph without them, all of them switched
+// off and hardly a true edge; a wrong consecutive edge is switched off too.
+#include <swslam/graph/outlier_decision.h>
+
+#include <swslam/graph/initialization.h>
+#include <swslam/graph/sliding_window.h>
+#include <swslam/graph/synthetic.h>
+
+#include "graph_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+using namespace swslam::graph;
+
+namespace
+{
+PoseGraph leastSquares(PoseGraph g)
+{
+  GraphOptimizerParams l2;
+  l2.kernel_alpha = 2;
+  l2.relative_cost_tolerance = 1e-12;
+  optimizeFull(g, l2);
+  return g;
+}
+
+GraphOptimizerParams tls()
+{
+  GraphOptimizerParams p;
+  p.kernel_schedule = KernelSchedule::Tls;
+  return p;
+}
+
+double distance(const PoseGraph& g, const PoseGraph& reference)
+{
+  return compareToTruth(g, truthFromGraph(reference)).rmse_xy;
+}
+}  // namespace
+
+TEST(OutlierDecision, WithoutOutliersItIsLeastSquares)
+{
+  const SyntheticGraph s = swslam::test::robustWalk();
+  const PoseGraph l2 = leastSquares(s.graph);
+  PoseGraph g = s.graph;
+  const OptimizationReport r = optimizeFull(g, tls());
+  EXPECT_TRUE(r.switched_off.empty()) << r.switched_off.size() << " edges switched off";
+  const double chi2_l2 = graphChi2(fullSubproblem(l2, {}).problem);
+  EXPECT_NEAR(r.final_chi2, chi2_l2, 1e-3 * chi2_l2);
+  EXPECT_LT(distance(g, l2), 1e-3);
+  EXPECT_FALSE(r.start.empty());
+}
+
+TEST(OutlierDecision, AsManyFalseLoopsAsTrueOnesAreSwitchedOff)
+{
+  const SyntheticGraph s = swslam::test::robustWalk();
+  const PoseGraph l2 = leastSquares(s.graph);
+  for (const bool grouped : {false, true})
+  {
+    SCOPED_TRACE(grouped ? "grouped" : "random");
+    PoseGraph g = s.graph;
+    const std::vector<size_t> added = swslam::test::addAsManyFalseLoops(g, 13, grouped);
+    const OptimizationReport r = optimizeFull(g, tls());
+    // Every false loop off, and of the true edges at most the share the gate's chi-square
+    // quantile (0.999) leaves beyond it: the noise of the walk is what its information says.
+    const std::set<size_t> off(r.switched_off.begin(), r.switched_off.end());
+    for (const size_t k : added) EXPECT_TRUE(off.count(k)) << "false loop " << k << " kept";
+    EXPECT_LE(off.size() - added.size(), 3u);
+    EXPECT_LT(distance(g, l2), 0.01);
+  }
+}
+
+TEST(OutlierDecision, AWrongConsecutiveEdgeIsSwitchedOff)
+{
+  const SyntheticGraph s = swslam::test::robustWalk();
+  const PoseGraph l2 = leastSquares(s.graph);
+  // The graph with one consecutive edge replaced by a wrong one (1.5 m and 40 degrees off),
+  // from the dead reckoning of the wrong chain.
+  PoseGraph g;
+  size_t wrong = 0;
+  for (const auto id : s.graph.nodeIds()) g.addNode(id, s.graph.pose(id));
+  for (size_t k = 0; k < s.graph.edgeCount(); ++k)
+  {
+    const PoseGraph::Edge& e = s.graph.edge(k);
+    mrpt::poses::CPosePDFGaussianInf z = *e.measurement;
+    if (e.kind == EdgeKind::Consecutive && e.from == 200)
+    {
+      z.mean = z.mean + mrpt::poses::CPose2D(1.5, 0, 0.7);
+      wrong = k;
+    }
+    g.addEdge(e.from, e.to, z, e.kind);
+  }
+  const OptimizationReport r = optimizeFull(g, tls());
+  EXPECT_TRUE(std::count(r.switched_off.begin(), r.switched_off.end(), wrong));
+  EXPECT_LE(r.switched_off.size(), 3u);
+  EXPECT_LT(distance(g, l2), 0.01);
+}
