@@ -113,14 +113,13 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
 
 namespace
 {
-/** The whole graph with the fixed kernel; if that switched edges off, two more starts from the
- * same poses, graduated non-convexity and the outliers decided together (KernelSchedule::Tls,
- * outlier_decision.h), and the result of lowest cost under the fixed kernel. Started at the
- * chain's guess, the fixed kernel gives no weight to loops that disagree with the chain by far,
- * right or wrong: a wrong consecutive edge keeps the chain and the true loops are switched off;
- * GNC weighs them from a convex start, and TLS proposes inlier sets that do not depend on the
- * guess (doc/graph-optimization.md). The other starts' least-squares solves cost a little more
- * under the kernel when they switch the same edges off, so then the fixed result stays. */
+/** The whole graph with the fixed kernel; if that switched edges off, a second start from the
+ * same poses with graduated non-convexity, and the result of lower cost under the fixed kernel
+ * (the cost both minimize). Started at the chain's guess, the fixed kernel gives no weight to
+ * loops that disagree with the chain by far, right or wrong: a wrong consecutive edge keeps the
+ * chain and the true loops are switched off. GNC weighs them from a convex start
+ * (doc/graph-optimization.md). Its final least-squares solve costs a little more under the
+ * kernel when both switch the same edges off, so then the fixed result stays. */
 graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params)
 {
   if (params.kernel_schedule != graph::KernelSchedule::Fixed)
@@ -131,22 +130,17 @@ graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph
   for (const auto id : graph.nodeIds()) start.emplace_back(id, graph.pose(id));
   graph::OptimizationReport report = graph::optimizeFull(graph, params);
   if (report.switched_off.empty()) return report;
+  graph::PoseGraph second = graph;
+  for (const auto& [id, pose] : start) second.setPose(id, pose);
+  graph::GraphOptimizerParams gnc = params;
+  gnc.kernel_schedule = graph::KernelSchedule::Gnc;
+  const graph::OptimizationReport second_report = graph::optimizeFull(second, gnc);
   const auto kernels = graph::uniformKernels(params.kernel());
-  double cost = graph::robustCost(graph::fullSubproblem(graph, params).problem, kernels);
-  for (const auto schedule : {graph::KernelSchedule::Gnc, graph::KernelSchedule::Tls})
-  {
-    graph::PoseGraph other = graph;
-    for (const auto& [id, pose] : start) other.setPose(id, pose);
-    graph::GraphOptimizerParams p = params;
-    p.kernel_schedule = schedule;
-    const graph::OptimizationReport other_report = graph::optimizeFull(other, p);
-    const double other_cost = graph::robustCost(graph::fullSubproblem(other, params).problem, kernels);
-    if (!(other_cost < cost)) continue;
-    graph = std::move(other);
-    report = other_report;
-    cost = other_cost;
-  }
-  return report;
+  const double cost = graph::robustCost(graph::fullSubproblem(graph, params).problem, kernels);
+  const double second_cost = graph::robustCost(graph::fullSubproblem(second, params).problem, kernels);
+  if (!(second_cost < cost)) return report;
+  graph = std::move(second);
+  return second_report;
 }
 }  // namespace
 
