@@ -22,6 +22,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> datasets("", "mrpt-datasets", "MRPT datasets directory", false,
                                         "/usr/share/mrpt/datasets", "DIR", cmd);
   TCLAP::ValueArg<int> repeats("", "repeats", "timed runs per solver (median)", false, 5, "N", cmd);
+  TCLAP::ValueArg<unsigned> seed("", "seed", "with --graph or --false-loops: the false loops' draw", false, 7, "N", cmd);
   TCLAP::MultiArg<size_t> false_loops("", "false-loops", "instead: robust back ends against this many false "
                                       "loops (repeatable)", false, "N", cmd);
   TCLAP::ValueArg<size_t> nodes("", "nodes", "with --false-loops: nodes of the Manhattan-like grid walk",
@@ -30,7 +31,7 @@ int main(int argc, char** argv)
                                       "methods (default: the built-in defaults, as config/default.ini)",
                                       false, "", "INI", cmd);
   TCLAP::MultiArg<std::string> only("", "method", "with --false-loops: run only this method (repeatable; "
-                                    "least-squares, fixed, gnc, adaptive, ceres-cauchy)", false, "NAME", cmd);
+                                    "least-squares, fixed, gnc, adaptive, tls, ceres-cauchy)", false, "NAME", cmd);
   TCLAP::MultiArg<std::string> graphs("", "graph", "instead of the grid walk: this pose-graph file (repeatable), "
                                       "from its own guess", false, "FILE", cmd);
   TCLAP::MultiArg<double> shares("", "false-share", "with --graph: false loops as this share of the graph's loops "
@@ -63,7 +64,7 @@ int main(int argc, char** argv)
           counts.push_back(static_cast<size_t>(std::lround(share * swslam::graph::loopEdgeCount(g))));
         }
         const std::string name = file.substr(file.find_last_of('/') + 1);
-        swslam::bench::falseLoopCases(name, g, counts, params, methods, stdout);
+        swslam::bench::falseLoopCases(name, g, counts, params, methods, stdout, seed.getValue());
       }
       return 0;
     }
@@ -88,12 +89,12 @@ int main(int argc, char** argv)
 #endif
       if (only.isSet()) methods = swslam::bench::selectMethods(methods, only.getValue());
       swslam::bench::falseLoopCases("grid-" + std::to_string(o.nodes), s.graph, false_loops.getValue(), params, methods,
-                                    stdout);
+                                    stdout, seed.getValue());
       // A public graph too: MRPT's circle of 50 nodes, from its own initial guess.
       const std::string circle = datasets.getValue() + "/graph_2d_circle_50nodes.graph";
       if (std::ifstream(circle).good())
         swslam::bench::falseLoopCases("mrpt-circle-50", swslam::graph::loadGraph(circle), false_loops.getValue(),
-                                      params, methods, stdout);
+                                      params, methods, stdout, seed.getValue());
       else
         std::printf("(MRPT's %s not found: --mrpt-datasets)\n", circle.c_str());
       return 0;

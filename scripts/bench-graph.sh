@@ -3,7 +3,7 @@
 # grid walk of 3500 nodes (the edges per node of the M3500 graph), its outlier-free optimum,
 # then 0, 10, 100, 500 and 1000 false loops (fixed seed), random and grouped in runs of 10 as
 # the Vertigo benchmark, optimized from the odometry guess by least squares, the fixed kernel,
-# graduated non-convexity, the adaptive kernel and, when Ceres is built
+# graduated non-convexity, the adaptive kernel, truncated least squares (tls) and, when Ceres is built
 # (scripts/install-deps.sh --with-bench), Ceres with a Cauchy loss; the same on MRPT's 50-node
 # circle graph. Per case: distance to the outlier-free optimum, the chi2 of the true edges at
 # the result against the optimum's, the edges switched off (precision, recall against the

@@ -66,7 +66,8 @@ std::vector<RobustMethod> selectMethods(const std::vector<RobustMethod>& methods
 
 std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::PoseGraph& clean,
                                           const std::vector<size_t>& counts, const graph::GraphOptimizerParams& params,
-                                          const std::vector<RobustMethod>& methods, std::FILE* progress)
+                                          const std::vector<RobustMethod>& methods, std::FILE* progress,
+                                          unsigned seed)
 {
   graph::PoseGraph optimum = clean;
   // The reference: least squares run until the steps vanish, not to a relative tolerance, so
@@ -87,7 +88,7 @@ std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::
       graph::FalseLoopOptions fo;
       fo.count = n;
       fo.grouped = grouped;
-      fo.seed = 7;
+      fo.seed = seed;
       const std::vector<size_t> added = graph::addFalseLoops(g, fo);
       // The target kernel's cost of the graph with its false loops, at the outlier-free optimum.
       graph::PoseGraph clean_with_false = g;

@@ -57,14 +57,14 @@ struct FalseLoopCase
 };
 
 /** The outlier-free optimum of `clean` (least squares from its guess), then every count of
- * `counts` false loops (seed fixed), random and grouped, by every method; `params` is the
- * target kernel the costs are measured with. Each case is also printed to `progress` as it
+ * `counts` false loops (drawn with `seed`), random and grouped, by every method; `params` is
+ * the target kernel the costs are measured with. Each case is also printed to `progress` as it
  * ends, if given. */
 std::vector<FalseLoopCase> falseLoopCases(const std::string& name, const graph::PoseGraph& clean,
                                           const std::vector<size_t>& counts,
                                           const graph::GraphOptimizerParams& params,
                                           const std::vector<RobustMethod>& methods,
-                                          std::FILE* progress = nullptr);
+                                          std::FILE* progress = nullptr, unsigned seed = 7);
 
 /** One line per case: graph, method, false loops, random or grouped, then the fields by name. */
 std::string formatCase(const FalseLoopCase& c);
