@@ -9,7 +9,10 @@
 //  - the guess's: GNC for TLS from the guess, mu starting at 1 (an edge far from the guess
 //    weighs nothing from the first round; from an odometry guess, a loop the chain cannot reach);
 //  - the locally consistent loops (loop_support.h), from LAGO's poses on them;
-//  - robust LAGO's (initialization.h) over the locally consistent loops.
+//  - robust LAGO's (initialization.h) over the locally consistent loops (and over every loop
+//    where few lack support).
+// Then the best is tried with the edges switched off near their gates taken back, and without
+// each strained run of loops that agree with each other.
 
 #include <swslam/graph/optimizer.h>
 #include <swslam/graph/truncated.h>
