@@ -252,24 +252,27 @@ std::vector<double> lagoHeadings(const GraphProblem& problem)
   int free = 0;
   const std::vector<int> index = freeIndex(problem, tree, free);
   std::vector<geometry::Pose2> poses = problem.poses;
-  if (free > 0) solveHeadings(problem, unwrappedRotations(problem, tree), index, free, std::vector<double>(problem.edges.size(), 1.0), poses);
+  if (free > 0)
+    solveHeadings(problem, unwrappedRotations(problem, tree), index, free, std::vector<double>(problem.edges.size(), 1.0), poses);
   std::vector<double> theta(poses.size());
   for (size_t p = 0; p < poses.size(); ++p) theta[p] = poses[p].z();
   return theta;
 }
 
-std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
+std::vector<geometry::Pose2> lagoPositions(const GraphProblem& problem, const std::vector<double>& headings)
 {
-  const std::vector<int> tree = spanningTree(problem);
   int free = 0;
-  const std::vector<int> index = freeIndex(problem, tree, free);
+  const std::vector<int> index = freeIndex(problem, spanningTree(problem), free);
   std::vector<geometry::Pose2> poses = problem.poses;
-  if (free == 0) return poses;
-  const std::vector<double> all(problem.edges.size(), 1.0);
-  solveHeadings(problem, unwrappedRotations(problem, tree), index, free, all, poses);
-  solvePositions(problem, index, free, all, poses);
+  for (size_t p = 0; p < poses.size(); ++p) poses[p].z() = headings[p];
+  if (free > 0) solvePositions(problem, index, free, std::vector<double>(problem.edges.size(), 1.0), poses);
   for (auto& p : poses) p.z() = std::remainder(p.z(), 2 * M_PI);
   return poses;
+}
+
+std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem)
+{
+  return lagoPositions(problem, lagoHeadings(problem));
 }
 
 RobustLago robustLagoPoses(const GraphProblem& problem, const std::vector<char>& use, const OutlierGates& gates)

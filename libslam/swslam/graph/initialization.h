@@ -37,6 +37,10 @@ std::vector<geometry::Pose2> lagoPoses(const GraphProblem& problem);
 /** LAGO's headings alone (the first of its two solves), per pose. */
 std::vector<double> lagoHeadings(const GraphProblem& problem);
 
+/** LAGO's second solve: the poses with those headings and the positions that fit them
+ * (lagoPoses = lagoPositions(lagoHeadings)). */
+std::vector<geometry::Pose2> lagoPositions(const GraphProblem& problem, const std::vector<double>& headings);
+
 /** LAGO with the robustified edges decided by graduated non-convexity for truncated least
  * squares (truncated.h), each of its linear solves the non-minimal solver: the headings first,
  * their rotations unwrapped along the tree of the edges not robustified where those reach (the

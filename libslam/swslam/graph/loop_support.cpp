@@ -33,17 +33,34 @@ CPosePDFGaussian inverted(const CPosePDFGaussian& p)
   return out;
 }
 
+/** Every edge's measurement as a Gaussian, and its inverse: built once, composed many times. */
+struct Measurements
+{
+  explicit Measurements(const GraphProblem& problem)
+  {
+    forward.reserve(problem.edges.size());
+    backward.reserve(problem.edges.size());
+    for (const auto& e : problem.edges)
+    {
+      forward.push_back(measured(e));
+      backward.push_back(inverted(forward.back()));
+    }
+  }
+  std::vector<CPosePDFGaussian> forward, backward;
+};
+
 /** The chain's relative pose from pose `from` to pose `to` (same chain), composed step by step. */
-CPosePDFGaussian alongChain(const GraphProblem& problem, const OdometryChain& chain, int from, int to)
+CPosePDFGaussian alongChain(const GraphProblem& problem, const OdometryChain& chain, const Measurements& z, int from,
+                            int to)
 {
   CPosePDFGaussian t;  // identity, zero covariance
   int p = from;
   while (p != to)
   {
     const bool forward = chain.position[to] > chain.position[p];
-    const auto& e = problem.edges[forward ? chain.next[p] : chain.previous[p]];
-    t += forward ? measured(e) : inverted(measured(e));
-    p = forward ? e.j : e.i;
+    const int k = forward ? chain.next[p] : chain.previous[p];
+    t += forward ? z.forward[k] : z.backward[k];
+    p = forward ? problem.edges[k].j : problem.edges[k].i;
   }
   return t;
 }
@@ -92,7 +109,9 @@ bool isLoopCandidate(const GraphProblem& problem, const OdometryChain& chain, si
   return e.robust && chain.next[e.i] != static_cast<int>(k);
 }
 
-double cycleChi2(const GraphProblem& problem, const OdometryChain& chain, size_t a, size_t b,
+namespace
+{
+double cycleChi2(const GraphProblem& problem, const OdometryChain& chain, const Measurements& z, size_t a, size_t b,
                  const LoopSupportOptions& options)
 {
   const auto& ea = problem.edges[a];
@@ -106,26 +125,36 @@ double cycleChi2(const GraphProblem& problem, const OdometryChain& chain, size_t
   }
   const int k = reversed ? eb.j : eb.i, l = reversed ? eb.i : eb.j;
   // i -> k along the chain, k -> l by loop b, l -> j along the chain: loop a's prediction.
-  CPosePDFGaussian cycle = alongChain(problem, chain, ea.i, k);
-  cycle += reversed ? inverted(measured(eb)) : measured(eb);
-  cycle += alongChain(problem, chain, l, ea.j);
-  const CPosePDFGaussian za = measured(ea);
+  CPosePDFGaussian cycle = alongChain(problem, chain, z, ea.i, k);
+  cycle += reversed ? z.backward[b] : z.forward[b];
+  cycle += alongChain(problem, chain, z, l, ea.j);
+  const CPosePDFGaussian& za = z.forward[a];
   Eigen::Vector3d d(cycle.mean.x() - za.mean.x(), cycle.mean.y() - za.mean.y(),
                     mrpt::math::wrapToPi(cycle.mean.phi() - za.mean.phi()));
   const Eigen::Matrix3d S = cycle.cov.asEigen() + za.cov.asEigen();
   return d.dot(S.ldlt().solve(d));
 }
+}  // namespace
+
+double cycleChi2(const GraphProblem& problem, const OdometryChain& chain, size_t a, size_t b,
+                 const LoopSupportOptions& options)
+{
+  return cycleChi2(problem, chain, Measurements(problem), a, b, options);
+}
 
 namespace
 {
-/** Calls f(a, b) once for each pair of loop candidates whose ends lie within the window of
- * each other (cycleChi2 >= 0), after marking every loop candidate with 0 in `marks` (-1 the
- * other edges). */
-template <typename F>
-void forNeighbours(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options,
-                   std::vector<int>& marks, F f)
+int findRoot(std::vector<int>& parent, int a)
 {
-  marks.assign(problem.edges.size(), -1);
+  while (parent[a] != a) a = parent[a] = parent[parent[a]];
+  return a;
+}
+}  // namespace
+
+LoopAgreement loopAgreement(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options)
+{
+  const size_t m = problem.edges.size();
+  LoopAgreement out{std::vector<int>(m, -1), std::vector<int>(m, -1)};
   // Loops ordered by their earlier end's chain and position: the neighbours of one are a
   // stretch of this order.
   std::vector<size_t> loops;
@@ -134,58 +163,38 @@ void forNeighbours(const GraphProblem& problem, const OdometryChain& chain, cons
     const int first = chain.position[e.i] <= chain.position[e.j] || chain.chain[e.i] != chain.chain[e.j] ? e.i : e.j;
     return std::make_pair(chain.chain[first], chain.position[first]);
   };
-  for (size_t k = 0; k < problem.edges.size(); ++k)
+  for (size_t k = 0; k < m; ++k)
     if (isLoopCandidate(problem, chain, k))
     {
-      marks[k] = 0;
+      out.support[k] = 0;
       if (chain.chain[problem.edges[k].i] >= 0 && chain.chain[problem.edges[k].j] >= 0) loops.push_back(k);
     }
   std::sort(loops.begin(), loops.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
+  const Measurements z(problem);
+  std::vector<int> parent(m);
+  for (size_t k = 0; k < m; ++k) parent[k] = static_cast<int>(k);
   for (size_t u = 0; u < loops.size(); ++u)
     for (size_t v = u + 1; v < loops.size(); ++v)
     {
       const auto [cu, pu] = key(loops[u]);
       const auto [cv, pv] = key(loops[v]);
       if (cv != cu || pv > pu + options.window) break;
-      const double chi2 = cycleChi2(problem, chain, loops[u], loops[v], options);
-      if (chi2 >= 0) f(loops[u], loops[v], chi2);
+      const double chi2 = cycleChi2(problem, chain, z, loops[u], loops[v], options);
+      if (!(chi2 >= 0 && chi2 < options.gate)) continue;
+      ++out.support[loops[u]], ++out.support[loops[v]];
+      parent[findRoot(parent, static_cast<int>(loops[u]))] = findRoot(parent, static_cast<int>(loops[v]));
     }
-}
-
-int findRoot(std::vector<int>& parent, int a)
-{
-  while (parent[a] != a) a = parent[a] = parent[parent[a]];
-  return a;
-}
-}  // namespace
-
-std::vector<int> loopSupport(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options)
-{
-  std::vector<int> support;
-  forNeighbours(problem, chain, options, support, [&](size_t a, size_t b, double chi2) {
-    if (chi2 < options.gate) ++support[a], ++support[b];
-  });
-  return support;
-}
-
-std::vector<int> loopRuns(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options)
-{
-  std::vector<int> runs;
-  std::vector<int> parent(problem.edges.size());
-  for (size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
-  forNeighbours(problem, chain, options, runs, [&](size_t a, size_t b, double chi2) {
-    if (chi2 < options.gate) parent[findRoot(parent, static_cast<int>(a))] = findRoot(parent, static_cast<int>(b));
-  });
-  std::vector<int> number(problem.edges.size(), -1);
+  // Runs numbered from 0 in the order of their first edge.
+  std::vector<int> number(m, -1);
   int count = 0;
-  for (size_t k = 0; k < runs.size(); ++k)
+  for (size_t k = 0; k < m; ++k)
   {
-    if (runs[k] < 0) continue;
+    if (out.support[k] < 0) continue;
     int& n = number[findRoot(parent, static_cast<int>(k))];
     if (n < 0) n = count++;
-    runs[k] = n;
+    out.runs[k] = n;
   }
-  return runs;
+  return out;
 }
 
 }  // namespace swslam::graph

@@ -38,14 +38,18 @@ struct LoopSupportOptions
 double cycleChi2(const GraphProblem& problem, const OdometryChain& chain, size_t a, size_t b,
                  const LoopSupportOptions& options = {});
 
-/** Per edge, how many other loop candidates agree with it (cycleChi2 within the gate); -1 for
- * an edge that is no loop candidate. */
-std::vector<int> loopSupport(const GraphProblem& problem, const OdometryChain& chain,
-                             const LoopSupportOptions& options = {});
-
-/** Per edge, the run of loop candidates it belongs to (-1: no loop candidate): loops joined
- * when they support each other (the loops of one revisit, or one group of false loops that
- * agree), transitively. Runs are numbered from 0. */
-std::vector<int> loopRuns(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options = {});
+/** Which loop candidates agree with their neighbours (cycleChi2 within the gate), per edge:
+ * - support: how many other loop candidates agree with it; -1 for an edge that is no loop
+ *   candidate;
+ * - runs: the run of loops it belongs to (-1: no loop candidate), loops joined when they agree
+ *   (the loops of one revisit, or one group of false loops that agree), transitively; numbered
+ *   from 0.
+ * Each pair of neighbours is checked once, each edge's Gaussian built once. */
+struct LoopAgreement
+{
+  std::vector<int> support;
+  std::vector<int> runs;
+};
+LoopAgreement loopAgreement(const GraphProblem& problem, const OdometryChain& chain, const LoopSupportOptions& options = {});
 
 }  // namespace swslam::graph

@@ -122,7 +122,7 @@ TEST(LoopSupport, TrueLoopsAreSupportedAndRandomFalseOnesAreNot)
   GraphOptimizerParams params;
   const GraphSubproblem sub = fullSubproblem(s.graph, params);
   const OdometryChain chain = odometryChain(sub.problem);
-  const std::vector<int> support = loopSupport(sub.problem, chain);
+  const std::vector<int> support = loopAgreement(sub.problem, chain).support;
   size_t true_loops = 0, true_supported = 0, false_supported = 0;
   for (size_t k = 0; k < support.size(); ++k)
   {
@@ -146,7 +146,7 @@ TEST(LoopSupport, AGroupOfFalseLoopsIsOneRun)
   for (int t = 0; t < 10; ++t) c.p.edges.push_back(loop(c, 10 + t, 60 + t, rng, Pose2(2.0, 1.0, 0.0)));
   c.p.edges.push_back(loop(c, 40, 75, rng));  // alone
   const OdometryChain chain = odometryChain(c.p);
-  const std::vector<int> runs = loopRuns(c.p, chain);
+  const std::vector<int> runs = loopAgreement(c.p, chain).runs;
   std::set<int> group;
   for (size_t k = first; k < first + 10; ++k) group.insert(runs[k]);
   EXPECT_EQ(group.size(), 1u);

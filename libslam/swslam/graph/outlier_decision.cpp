@@ -88,14 +88,13 @@ std::vector<char> guessInliers(const GraphProblem& problem, const OutlierGates& 
   return in;
 }
 
-/** Whether LAGO's headings fit every robustified edge's rotation within its gate. */
-bool headingsFitEveryEdge(const GraphProblem& problem, const OutlierGates& gates)
+/** Whether `headings` fit every robustified edge's rotation within its gate. */
+bool headingsFitEveryEdge(const GraphProblem& problem, const std::vector<double>& headings, const OutlierGates& gates)
 {
-  const std::vector<double> theta = lagoHeadings(problem);
   for (const auto& e : problem.edges)
   {
     if (!e.robust) continue;
-    const double r = std::remainder(theta[e.j] - theta[e.i] - e.z.z(), 2 * M_PI);
+    const double r = std::remainder(headings[e.j] - headings[e.i] - e.z.z(), 2 * M_PI);
     if (r * r / e.information.inverse()(2, 2) > gates.of(e) * gates.of(e)) return false;
   }
   return true;
@@ -175,9 +174,17 @@ Candidate refined(const GraphProblem& problem, Proposal p, const OutlierGates& g
  * headings fit every edge within its gate (a graph with no outlier); nothing otherwise. */
 std::vector<Proposal> everyEdge(const GraphProblem& problem, const OutlierGates& gates)
 {
-  if (!headingsFitEveryEdge(problem, gates)) return {};
   GraphProblem lago = problem;
-  lago.poses = lagoOrGuess(problem);
+  try
+  {
+    const std::vector<double> headings = lagoHeadings(problem);
+    if (!headingsFitEveryEdge(problem, headings, gates)) return {};
+    lago.poses = lagoPositions(problem, headings);
+  }
+  catch (const std::runtime_error&)
+  {
+    return {};  // a singular system (a piece held by nothing): no such proposal
+  }
   const bool from_lago = graphChi2(lago) < graphChi2(problem);
   return {{from_lago ? "every edge, from LAGO" : "every edge", std::vector<char>(problem.edges.size(), 1),
            from_lago ? lago.poses : problem.poses}};
@@ -213,7 +220,7 @@ std::vector<Proposal> decidedProposals(const GraphProblem& problem, const std::v
   return out;
 }
 
-/** The runs of loops (loopRuns) worth trying without their kept loops, the most strained first
+/** The runs of loops (LoopAgreement::runs) worth trying without their kept loops, the most strained first
  * (the largest mean squared residual of their kept loops: a group of false loops the graph bent
  * itself to take in), at most kMaxRunTrials. Without a run its loops cost their gates, and the
  * other edges at least nothing: a run whose loops' margin below their gates exceeds the chi2 of
@@ -228,7 +235,9 @@ std::vector<int> strainedRuns(const GraphProblem& problem, const Candidate& best
   GraphProblem at = problem;
   at.poses = best.poses;
   const std::vector<double> res = robustResiduals(at);
-  const double kept_chi2 = graphChi2(subset(at, best.inliers));
+  double kept_chi2 = graphChi2(at);
+  for (size_t k = 0; k < runs.size(); ++k)
+    if (!best.inliers[k]) kept_chi2 -= res[k] * res[k];
   for (size_t k = 0; k < runs.size(); ++k)
   {
     if (runs[k] < 0 || !best.inliers[k]) continue;
@@ -302,10 +311,10 @@ OptimizationReport optimizeTruncated(GraphProblem& problem, const GraphOptimizer
                      std::all_of(best.inliers.begin(), best.inliers.end(), [](char in) { return in != 0; });
   if (!clean)
   {
-    const OdometryChain chain = odometryChain(problem);
-    for (Proposal& p : decidedProposals(problem, loopSupport(problem, chain), gates, params)) consider(std::move(p));
+    const LoopAgreement agreement = loopAgreement(problem, odometryChain(problem));
+    for (Proposal& p : decidedProposals(problem, agreement.support, gates, params)) consider(std::move(p));
     if (!best.name.empty()) tryNearEdges(problem, gates, params, best, iterations);
-    if (!best.name.empty()) tryWithoutStrainedRuns(problem, loopRuns(problem, chain), gates, params, best, iterations);
+    if (!best.name.empty()) tryWithoutStrainedRuns(problem, agreement.runs, gates, params, best, iterations);
   }
   OptimizationReport rep = best.solve;
   rep.edges = m;

@@ -15,18 +15,15 @@ double gncTlsWeight(double r2, double c2, double mu)
 
 double truncatedCost(const GraphProblem& problem, const OutlierGates& gates)
 {
+  // The chi2 of every edge, less the part of each robustified edge beyond its gate.
   const std::vector<double> r = robustResiduals(problem);
-  GraphProblem plain = problem;
-  plain.edges.clear();
-  double cost = 0;
+  double cost = graphChi2(problem);
   for (size_t k = 0; k < problem.edges.size(); ++k)
   {
-    if (problem.edges[k].robust)
-      cost += std::min(r[k] * r[k], gates.of(problem.edges[k]) * gates.of(problem.edges[k]));
-    else
-      plain.edges.push_back(problem.edges[k]);
+    const double g = gates.of(problem.edges[k]);
+    if (problem.edges[k].robust && r[k] > g) cost -= r[k] * r[k] - g * g;
   }
-  return cost + graphChi2(plain);
+  return cost;
 }
 
 std::vector<double> graduatedTls(const std::vector<char>& robust, const std::vector<double>& c2, double mu0,
