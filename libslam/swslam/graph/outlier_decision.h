@@ -6,6 +6,9 @@
 // least squares on its edges and then on the edges within the gate at the result (until that
 // set holds), and the lowest truncated cost wins:
 //  - every edge, when LAGO's headings fit every edge (a graph with no outlier);
+//  - where loops are few, the loops taken one at a time in the chain's order, each kept if it
+//    fits or clearly lowers the cost over the edges met so far (a sparse graph whose loops have
+//    no neighbour to support them);
 //  - the guess's: GNC for TLS from the guess, mu starting at 1 (an edge far from the guess
 //    weighs nothing from the first round; from an odometry guess, a loop the chain cannot reach);
 //  - the locally consistent loops (loop_support.h), from LAGO's poses on them;
