@@ -1,8 +1,9 @@
 #pragma once
-// Levenberg-Marquardt with iteratively reweighted least squares (paper eq. 11-13) over a
-// pose-graph problem given as plain values: poses, which of them are held fixed, and
-// relative-pose edges with information matrices. The normal equations are sparse (3x3
-// blocks) and solved by Eigen's simplicial LDL^T with AMD ordering.
+// A pose-graph problem given as plain values (poses, which of them are held fixed, and
+// relative-pose edges with information matrices) and its optimization by kernel schedule
+// (optimizeGraphProblem): the fixed kernel by Levenberg-Marquardt with iteratively reweighted
+// least squares (paper eq. 11-13; levenberg_marquardt.h), graduated non-convexity and the
+// adaptive kernel (graduated.h), truncated least squares (outlier_decision.h).
 
 #include <swslam/geometry/se2_error.h>
 #include <swslam/graph/optimizer_params.h>
