@@ -29,7 +29,16 @@ FeedResult InputGate::admit(sensor::ScanInput& input)
     return {FeedStatus::TimestampOutOfRange, buf + common::timeUnitHint(t)};
   }
   FeedResult result;
-  if (!std::isfinite(t) || t <= last_timestamp_)
+  const bool jitter = options_.timestamp_step_back > 0 && std::isfinite(t) && last_timestamp_ >= 0 &&
+                      t <= last_timestamp_ && last_timestamp_ - t <= options_.timestamp_step_back;
+  if (jitter)
+  {
+    char buf[200];
+    std::snprintf(buf, sizeof(buf), "timestamp %.6f s is %s the latest taken (%.6f s): taken under its own stamp", t,
+                  t == last_timestamp_ ? "equal to" : "a little before", last_timestamp_);
+    result = {FeedStatus::TimestampStepBack, buf};
+  }
+  else if (!std::isfinite(t) || t <= last_timestamp_)
   {
     // Scans behind the last one taken, but in order among themselves: once there are
     // timestamp_resume_scans of them, that one had jumped forward and the log goes on here.
@@ -40,8 +49,8 @@ FeedResult InputGate::admit(sensor::ScanInput& input)
     char buf[200];
     if (resume == 0 || behind_in_order_ < resume)
     {
-      std::snprintf(buf, sizeof(buf), "timestamp %.6f s is %s the previous scan's (%.6f s)", t,
-                    t == last_timestamp_ ? "equal to" : "before", last_timestamp_);
+      std::snprintf(buf, sizeof(buf), "timestamp %.6f s is %.3g s before the latest taken (%.6f s)", t,
+                    last_timestamp_ - t, last_timestamp_);
       return {FeedStatus::TimestampNotIncreasing, buf};
     }
     std::snprintf(buf, sizeof(buf),
@@ -61,7 +70,7 @@ FeedResult InputGate::admit(sensor::ScanInput& input)
   // An odometry increment is checked where it enters: a value no vehicle reaches would become
   // the tracker's guess, the search's window and a map pose.
   const double since_last = t - last_timestamp_;
-  last_timestamp_ = t;
+  if (!jitter) last_timestamp_ = t;  // after a resumption, the log's clock goes on from here
   if (input.odometry_increment && !isFinite(*input.odometry_increment))
   {
     result = {FeedStatus::OdometryDropped,

@@ -1,7 +1,8 @@
 #pragma once
 // Where a scan enters the system (SlamSystem::feed): the checks it must pass, on the caller's
-// thread, before any module sees it. A timestamp outside 1970-2200 or one that does not
-// increase (backwards or repeated) and inconsistent geometry skip the scan and say why; a log
+// thread, before any module sees it. A timestamp outside 1970-2200 or one further before the
+// latest taken than a logger's jitter, and inconsistent geometry, skip the scan and say why; a
+// stamp that repeats or steps back a little is taken under its own stamp and said; a log
 // whose stamp jumped forward resumes once enough scans behind it come in order; an odometry
 // increment that is not finite, or longer than the vehicle can go, is dropped (the scan is
 // tracked without it) and said.
@@ -23,12 +24,14 @@ enum class FeedStatus
   BadGeometry,             ///< too few beams, aperture, max range or sensor pose unusable: skipped
   OdometryDropped,         ///< taken, without its odometry increment (not finite, or too long)
   TimestampsResumed,       ///< taken: the scans behind a stamp that jumped forward resume the log
+  TimestampStepBack,       ///< taken: its stamp repeats the latest or is a little before it
   Stopped,                 ///< the pipeline stopped (finish() was called or a module failed)
 };
 /** The scan was taken (possibly without its odometry), not skipped. */
 inline bool scanTaken(FeedStatus s)
 {
-  return s == FeedStatus::Accepted || s == FeedStatus::OdometryDropped || s == FeedStatus::TimestampsResumed;
+  return s == FeedStatus::Accepted || s == FeedStatus::OdometryDropped || s == FeedStatus::TimestampsResumed ||
+         s == FeedStatus::TimestampStepBack;
 }
 
 struct FeedResult
@@ -42,7 +45,7 @@ struct FeedResult
 class InputGate
 {
  public:
-  /** Reads timestamp_resume_scans and max_odometry_speed. */
+  /** Reads timestamp_resume_scans, timestamp_step_back and max_odometry_speed. */
   explicit InputGate(const SystemOptions& options) : options_(options) {}
 
   /** Checks `input`, dropping its odometry increment if that is unusable; the result says
@@ -51,7 +54,7 @@ class InputGate
 
  private:
   SystemOptions options_;
-  double last_timestamp_ = -1;  ///< of the last scan taken
+  double last_timestamp_ = -1;  ///< the latest stamp taken
   size_t behind_in_order_ = 0;  ///< skipped scans in a row behind last_timestamp_, in order
   double last_behind_ = 0;      ///< the last of them's timestamp
 };

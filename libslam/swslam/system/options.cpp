@@ -15,6 +15,8 @@ const common::ParamTable<SystemOptions>& SystemOptions::table()
                    "skipped-scan messages printed per kind; all are counted")
           .integer("timestamp_resume_scans", &P::timestamp_resume_scans, "", atLeast(0),
                    "this many scans in order behind a stamp that jumped forward resume the log (0: never)")
+          .real("timestamp_step_back", &P::timestamp_step_back, "s", common::between(0, 60),
+                "a scan whose stamp equals the latest, or is at most this before it, is taken under its own stamp (0: none)")
           .integer("max_graph_lag", &P::max_graph_lag, "", atLeast(-1),
                    "threaded mode: keyframes the graph thread may lag behind tracking (0: none, as deterministic; -1: no bound)")
           .real("max_odometry_speed", &P::max_odometry_speed, "m/s", common::between(0, 1e4),
