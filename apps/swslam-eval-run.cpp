@@ -10,7 +10,7 @@ using namespace swslam;
 int swslam_run_eval(const app::EvalOptions* o)
 {
   return app::exitCodeOf("swslam-eval", std::cerr, [o] {
-    app::runEval(*o, std::cout);
+    app::runEval(*o, std::cout, std::cerr);
     return 0;
   });
 }

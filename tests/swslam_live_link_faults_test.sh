@@ -6,6 +6,8 @@
 #   received is recorded. Before, the app hung inside MRPT's driver (it searches the garbage
 #   for a reply's echo for as long as bytes come).
 # - The sensor stopped (SIGSTOP) for 2.5 s, then continued: a stall, and mapping resumes.
+# - No scan at all (only garbage, or nothing listening): exit 2, the sensor named as never
+#   answering with the retry policy, and no empty outputs.
 # Usage: swslam_live_link_faults_test.sh SOURCE_DIR BINARY_DIR
 set -uo pipefail
 src=$1 build=$2
@@ -84,7 +86,20 @@ wait_live 16
 grep -Eq ' [1-9][0-9]* stall\(s\)' "$tmp/$name.out" || bad "the garbage did not count as a stall"
 check 80
 
-# The same, stopped by SIGINT; then garbage from the first byte, stopped by SIGTERM.
+# check_never_answered: not one scan: exit 2, the sensor named as never answering with the
+# retry policy, and nothing written (no empty map, trajectory or recording).
+check_never_answered() {
+  ((code == 2)) || bad "exit $code, not 2"
+  grep -q "swslam-live: the sensor never answered: not one scan from 127.0.0.1:$port in [0-9]* s ([0-9]* connection attempt(s), [0-9]* failed; reconnecting after 250 ms, doubling up to 4000 ms, for as long as the run lasts): is it powered, and at that address?; nothing written" \
+    "$tmp/$name.err" || bad "not said: $(cat "$tmp/$name.err")"
+  local left
+  left=$(find "$tmp/$name" -type f ! -name .swslam.lock 2> /dev/null)
+  [[ -z $left ]] || bad "written: $left"
+  echo "$name: exit $code; $(grep 'never answered' "$tmp/$name.err")"
+}
+
+# The same, stopped by SIGINT; then garbage from the first byte, stopped by SIGTERM: not one
+# scan (it wrote a full set of empty outputs and exited 0).
 for sig in INT TERM; do
   name=SIG$sig
   if [[ $sig == INT ]]; then start_emulator --garbage-after 40 --garbage-connections 1000
@@ -94,8 +109,20 @@ for sig in INT TERM; do
   kill -s "$sig" "$live_pid"
   wait_live 5
   grep -q "stopped by signal" "$tmp/$name.err" || bad "no message"
-  if [[ $sig == INT ]]; then check 40; else check 0; fi
+  if [[ $sig == INT ]]; then check 40; else
+    grep -q "not SCIP 2.0" "$tmp/$name.err" || bad "the garbage is not reported"
+    check_never_answered
+  fi
 done
+
+# Nothing listening at the sensor's address, until --duration: it retried for ever with one
+# message, then exited 0 with a full set of empty outputs.
+name=nobody
+start_emulator
+kill "$emu_pid"; wait "$emu_pid" 2> /dev/null; emu_pid=  # its port, now closed
+start_live --duration 2
+wait_live 8
+check_never_answered
 
 # The sensor process stopped for 2.5 s (its connection open, silent), then continued.
 name=stopped

@@ -1,6 +1,9 @@
 #include "test_support.h"
 
 #include <cmath>
+#include <csignal>
+#include <stdexcept>
+#include <sys/resource.h>
 #include <filesystem>
 #include <limits>
 #include <unistd.h>
@@ -105,6 +108,27 @@ mrpt::obs::CObservation2DRangeScan simulateObservation(const World& world,
     obs.setScanRangeValidity(i, hit);
   }
   return obs;
+}
+
+void withFileSizeLimit(size_t bytes, const std::function<void()>& f)
+{
+  rlimit old{};
+  if (getrlimit(RLIMIT_FSIZE, &old) != 0) throw std::runtime_error("getrlimit failed");
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limited = old;
+  limited.rlim_cur = bytes;
+  if (setrlimit(RLIMIT_FSIZE, &limited) != 0) throw std::runtime_error("setrlimit failed");
+  struct Restore
+  {
+    rlimit old;
+    void (*previous)(int);
+    ~Restore()
+    {
+      setrlimit(RLIMIT_FSIZE, &old);
+      std::signal(SIGXFSZ, previous);
+    }
+  } restore{old, previous};
+  f();
 }
 
 std::string tempDir(const std::string& name)

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -41,5 +42,10 @@ mrpt::obs::CObservation2DRangeScan simulateObservation(const World& world,
 
 /** Unique path of a fresh temporary directory for one test. */
 std::string tempDir(const std::string& name);
+
+/** Runs `f` with the process's file size limit (RLIMIT_FSIZE) at `bytes` and SIGXFSZ ignored,
+ * both restored after it (also when it throws): a write past the limit fails with EFBIG, as a
+ * full disk refuses data with ENOSPC, without privileges. */
+void withFileSizeLimit(size_t bytes, const std::function<void()>& f);
 
 }  // namespace swslam::test

@@ -68,7 +68,7 @@ void consistency(const EvalOptions& o, const std::vector<common::StampedPose>& e
 }
 }  // namespace
 
-void runEval(const EvalOptions& o, std::ostream& out)
+void runEval(const EvalOptions& o, std::ostream& out, std::ostream& err)
 {
   const auto commands = evalCommands();
   if (std::find(commands.begin(), commands.end(), o.command) == commands.end())
@@ -83,8 +83,12 @@ void runEval(const EvalOptions& o, std::ostream& out)
   else if (o.command == "consistency")
     consistency(o, estimate, out);
   else if (o.command == "ate")
-    out << eval::formatTrajectoryEvaluation(
-        eval::evaluateTrajectory(estimate, eval::readNonEmptyTum(o.reference), o.max_dt, o.segment));
+  {
+    const auto e = eval::evaluateTrajectory(estimate, eval::readNonEmptyTum(o.reference), o.max_dt, o.segment);
+    if (const std::string warning = eval::unmatchedWarning(e); !warning.empty())
+      err << "swslam-eval: warning: " << o.estimate << ": " << warning << "\n";
+    out << eval::formatTrajectoryEvaluation(e);
+  }
   else
     out << eval::formatRelationsResult(eval::evaluateRelations(estimate, eval::readRelations(o.reference), o.max_dt));
 }

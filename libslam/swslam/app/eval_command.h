@@ -31,8 +31,9 @@ struct EvalOptions
  * its command line with them before it loads the library). */
 inline std::vector<std::string> evalCommands() { return {"ate", "relations", "consistency", "laser-optimum"}; }
 
-/** Runs one command and prints its report to `out`. Throws std::invalid_argument naming the
+/** Runs one command and prints its report to `out`, its warnings to `err` (ate: part of the
+ * estimate not matched by stamp). Throws std::invalid_argument naming the
  * option that is wrong, std::runtime_error naming an input that cannot be used. */
-void runEval(const EvalOptions& opts, std::ostream& out);
+void runEval(const EvalOptions& opts, std::ostream& out, std::ostream& err);
 
 }  // namespace swslam::app

@@ -43,14 +43,40 @@ TEST(EvalCommand, AteOfATrajectoryAgainstItselfIsZeroAndAgainstAStepIsNot)
   o.estimate = writeArc(dir, "est.tum", 0);
   o.reference = o.estimate;
   std::ostringstream same;
-  runEval(o, same);
+  runEval(o, same, same);
   EXPECT_EQ(value(same.str(), "matched"), "20");
   EXPECT_NEAR(std::stod(value(same.str(), "ate_rmse")), 0, 1e-9);
 
   o.reference = writeArc(dir, "gt.tum", 0.05);
   std::ostringstream step;
-  runEval(o, step);
+  runEval(o, step, step);
   EXPECT_GT(std::stod(value(step.str(), "ate_rmse")), 0.01);
+}
+
+TEST(EvalCommand, AteWarnsWhenPartOfTheEstimateIsNotMatchedByStamp)
+{
+  // Scans whose stamps stepped back: 200 of 296 poses were scored without a word.
+  const std::string dir = test::tempDir("eval_command_unmatched");
+  EvalOptions o;
+  o.command = "ate";
+  o.reference = writeArc(dir, "gt.tum", 0);
+  std::vector<common::StampedPose> est;
+  for (int k = 0; k < 20; k++)  // poses 12-16 stamped a second back: no ground truth there
+    est.push_back({0.1 * k - (k >= 12 && k < 17 ? 1.05 : 0), mrpt::poses::CPose2D(0.5 * k, 0, 0.01 * k)});
+  o.estimate = dir + "/est.tum";
+  common::writeTum(o.estimate, est);
+  std::ostringstream out, err;
+  runEval(o, out, err);
+  EXPECT_EQ(value(out.str(), "matched"), "15");
+  EXPECT_EQ(err.str(), "swslam-eval: warning: " + o.estimate +
+                           ": scored 15 of the 20 estimated poses: 5 have no ground-truth pose within 0.01 s of their "
+                           "stamp (the estimate's stamps step back or repeat 1 time(s): were its scans' stamps out of "
+                           "order?)\n");
+  // Every pose matched: no word.
+  o.estimate = o.reference;
+  std::ostringstream quiet;
+  runEval(o, out, quiet);
+  EXPECT_EQ(quiet.str(), "");
 }
 
 TEST(EvalCommand, WrongOptionsAreNamedBeforeAnyInputIsRead)
@@ -63,7 +89,7 @@ TEST(EvalCommand, WrongOptionsAreNamedBeforeAnyInputIsRead)
   const auto message = [&](EvalOptions x) {
     try
     {
-      runEval(x, out);
+      runEval(x, out, out);
     }
     catch (const std::exception& e)
     {

@@ -141,7 +141,8 @@ void run(const LiveRunOptions& opts, const Deadline& deadline, Opened& in, syste
       if (r.status != system::FeedStatus::Stopped && !r.message.empty())
         skips.report(r.status, in.link->stats().scans - 1, r.message);
     }
-    if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period))
+    // Nothing is saved before the first scan: a sensor that never answers leaves no empty map.
+    if (opts.save_period > 0 && now - last_save >= duration<double>(opts.save_period) && in.link->stats().scans > 0)
     {
       if (in.recorder) in.recorder->flush();
       outcome.outputs_failed |= !save(slam, in.params, opts, elapsed, err, false);
@@ -177,8 +178,30 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   run(opts, deadline, in, slam, err, outcome);
   // The sensor is let go first: it stops sending while the run finishes.
   const io::HokuyoLinkStats ls = in.link->stats();
+  const std::string address = in.link->address(), retries = in.link->retryPolicy();
   in.link.reset();
   slam.finish();
+  out << "# swslam-live: " << ls.scans << " scans received and " << (in.recorder ? in.recorder->written() : 0)
+      << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), " << ls.stalls
+      << " stall(s), " << ls.driver_messages << " driver error message(s), " << ls.garbage_bytes
+      << " byte(s) of data that was not SCIP 2.0\n";
+  if (ls.scans == 0)
+  {
+    // No map, no trajectory: say so rather than write a set of empty outputs.
+    err << "swslam-live: the sensor never answered: not one scan from " << address << " in "
+        << static_cast<long>(duration<double>(steady_clock::now() - deadline.t0).count()) << " s ("
+        << ls.attempts << " connection attempt(s), " << ls.errors << " failed; " << retries
+        << "): is it powered, and at that address?; nothing written\n";
+    if (in.recorder)
+    {
+      const std::string recording = in.recorder->path();
+      in.recorder.reset();
+      std::error_code ec;
+      std::filesystem::remove(recording, ec);
+    }
+    out << "# nothing written in " << opts.output << "/\n";
+    return kExitInputError;
+  }
   if (!slam.error().empty())
   {
     err << "swslam-live: " << slam.error() << "\n";
@@ -186,12 +209,9 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
   }
   outcome.outputs_failed |= !save(slam, in.params, opts, duration<double>(steady_clock::now() - deadline.t0).count(),
                                   err, true);
-  out << "# swslam-live: " << ls.scans << " scans received and " << (in.recorder ? in.recorder->written() : 0)
-      << " recorded; " << ls.connects << " connection(s), " << ls.errors << " driver error(s), " << ls.stalls
-      << " stall(s), " << ls.driver_messages << " driver error message(s), " << ls.garbage_bytes
-      << " byte(s) of data that was not SCIP 2.0\n";
   std::ifstream summary(opts.output + "/summary.md");
-  out << summary.rdbuf() << "# outputs in " << opts.output << "/\n";
+  if (summary) out << summary.rdbuf();
+  out << outputsLine(opts.output, opts.render);
   return exitCode(outcome);
 }
 

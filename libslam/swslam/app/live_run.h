@@ -25,7 +25,9 @@ struct LiveRunOptions
 };
 
 /** Runs until the duration ends or a signal arrives; returns 0 on a clean stop (signal or
- * duration), 1 for a bad config, 3 if a module failed, 4 if an output could not be written. */
+ * duration), 1 for a bad config, 2 if not one scan arrived (the sensor never answered:
+ * nothing is written, the empty recording removed), 3 if a module failed, 4 if an output
+ * could not be written. */
 int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err);
 
 }  // namespace swslam::app

@@ -197,8 +197,9 @@ bool diagnose(const OfflineRunOptions& opts, const Opened& in, const Produced& p
   // A run that tracked no scan has nothing to write: say why instead of an empty map.
   if (p.tracked == 0 && !stop.requested())
   {
-    const std::string why = p.read == 0 ? in.source->noScanReason(opts.sensor_label)
-                                        : "none of its " + std::to_string(p.read) + " scans could be used (see above)";
+    const std::string why = p.read > 0             ? "none of its " + std::to_string(p.read) + " scans could be used (see above)"
+                            : outcome.input_failed ? "it stopped before its first scan (see above)"
+                                                   : in.source->noScanReason(opts.sensor_label);
     err << "swslam: " << in.source->describe() << ": " << (why.empty() ? "no scan was tracked" : why)
         << "; nothing written\n";
     outcome.nothing_to_map = true;
@@ -261,8 +262,10 @@ void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::os
     err << "swslam: the previous run's outputs in " << opts.output << " are kept; what this run wrote is in "
         << (std::filesystem::path(opts.output) / OutputFolder::kUnfinished).string() << "/\n";
   outcome.outputs_failed = !written.problems.empty();
-  out << text << "# outputs in " << opts.output << "/ (map.png, " << (opts.render ? "render.png, " : "")
-      << "trajectory.tum, stats.csv, summary.md)\n";
+  out << text
+      << outputsLine(written.kept_previous ? (std::filesystem::path(opts.output) / OutputFolder::kUnfinished).string()
+                                           : opts.output,
+                     opts.render);
 }
 }  // namespace
 

@@ -11,6 +11,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace swslam::app
@@ -21,6 +22,21 @@ namespace
 {
 /** The staging folder of replaceRun: a killed run may leave it. */
 constexpr const char* kStaging = ".swslam-staging";
+
+/** "a directory", "a FIFO"...: what is at a path that should be a file. */
+std::string describeFileType(fs::file_type type)
+{
+  switch (type)
+  {
+    case fs::file_type::directory: return "a directory";
+    case fs::file_type::fifo: return "a FIFO";
+    case fs::file_type::symlink: return "a symbolic link";
+    case fs::file_type::socket: return "a socket";
+    case fs::file_type::block:
+    case fs::file_type::character: return "a device";
+    default: return "not a regular file";
+  }
+}
 }  // namespace
 
 OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
@@ -31,9 +47,24 @@ OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) fail("cannot be created" + (ec ? ": " + ec.message() : std::string()));
-  const std::string lock_path = (fs::path(dir) / ".swslam.lock").string();
-  lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0) fail(std::string("cannot be written: ") + std::strerror(errno));
+  const std::string lock_path = (fs::path(dir) / kLockFile).string();
+  // The lock must be a file of its own: a folder, FIFO or device there is named, not taken for
+  // the folder's fault (O_NONBLOCK: a FIFO's open does not wait for a writer).
+  const auto lockIsNoFile = [&](const fs::file_status& st) {
+    fail(std::string("its lock file ") + kLockFile + " is " + describeFileType(st.type()) +
+         ", not a file: remove it (" + lock_path + ")");
+  };
+  if (const auto st = fs::symlink_status(lock_path, ec); fs::exists(st) && !fs::is_regular_file(st)) lockIsNoFile(st);
+  lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
+  if (lock_fd_ < 0)
+    fail(std::string("cannot be written: its lock file ") + kLockFile + ": " + std::strerror(errno));
+  struct stat st{};
+  if (::fstat(lock_fd_, &st) != 0 || !S_ISREG(st.st_mode))
+  {
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    lockIsNoFile(fs::status(lock_path, ec));
+  }
   if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0)
   {
     std::ifstream in(lock_path);
@@ -46,7 +77,7 @@ OutputFolder::OutputFolder(const std::string& dir) : dir_(dir)
   // The holder's process id, for the message above (the lock itself is the flock).
   const std::string pid = std::to_string(::getpid()) + "\n";
   if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size()))
-    fail(std::string("cannot be written: ") + std::strerror(errno));
+    fail(std::string("cannot be written: its lock file ") + kLockFile + ": " + std::strerror(errno));
   for (const auto& entry : fs::directory_iterator(dir, ec))
     if (entry.is_regular_file() && common::isAtomicTemporary(entry.path().filename().string()) && fs::remove(entry.path(), ec))
       stale_removed_++;

@@ -17,8 +17,8 @@ class OutputFolder
 {
  public:
   /** Throws std::invalid_argument naming the folder and the problem: it cannot be created or
-   * written, or another run holds it (its lock, `.swslam.lock`, is released when that
-   * process ends, however it ends). */
+   * written, its lock file is no file (a directory, a FIFO: named), or another run holds it
+   * (its lock, `.swslam.lock`, is released when that process ends, however it ends). */
   explicit OutputFolder(const std::string& dir);
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
@@ -29,6 +29,9 @@ class OutputFolder
   /** Removes the files of `names` that a previous run left (once: later calls do nothing,
    * the files are this run's). */
   void clearPreviousRun(const std::vector<std::string>& names);
+
+  /** The lock file in the folder (a file: anything else there is an error naming it). */
+  static constexpr const char* kLockFile = ".swslam.lock";
 
   /** Where replaceRun leaves a run's outputs that could not all be written while the folder
    * holds a previous run's. */

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
+
 #include "test_support.h"
 
 using namespace swslam;
@@ -49,6 +51,25 @@ TEST(OutputFolder, AFolderThatCannotBeMadeIsNamed)
   touch(dir + "/a-file");
   const std::string why = errorOf(dir + "/a-file/out");
   EXPECT_NE(why.find("a-file/out': cannot be created"), std::string::npos) << why;
+}
+
+TEST(OutputFolder, ALockFileThatIsNoFileIsNamed)
+{
+  // "cannot be written: Is a directory" did not say what was a directory.
+  const std::string dir = test::tempDir("output_folder_lock_kinds");
+  const std::string lock = dir + "/.swslam.lock";
+  fs::create_directory(lock);
+  EXPECT_EQ(errorOf(dir), "output folder '" + dir + "': its lock file .swslam.lock is a directory, not a file: remove it (" +
+                              lock + ")");
+  fs::remove(lock);
+  ASSERT_EQ(::mkfifo(lock.c_str(), 0644), 0);
+  EXPECT_EQ(errorOf(dir), "output folder '" + dir + "': its lock file .swslam.lock is a FIFO, not a file: remove it (" +
+                              lock + ")");  // at once: opening a FIFO does not wait for a writer
+  fs::remove(lock);
+  fs::create_symlink("/nonexistent", lock);
+  EXPECT_NE(errorOf(dir).find("its lock file .swslam.lock is a symbolic link"), std::string::npos) << errorOf(dir);
+  fs::remove(lock);
+  EXPECT_EQ(errorOf(dir), "");
 }
 
 TEST(OutputFolder, AKilledRunsTemporariesGoAtOnceThePreviousOutputsJustBeforeWriting)

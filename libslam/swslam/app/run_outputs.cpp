@@ -4,6 +4,7 @@
 #include <swslam/eval/report.h>
 #include <swslam/graph/io.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <unordered_map>
@@ -94,6 +95,25 @@ std::vector<std::string> runOutputFiles()
           "trajectory.tum", "keyframes.tum", "graph.graph", "stats.csv", "summary.md"};
 }
 
+std::string outputsLine(const std::string& dir, bool render)
+{
+  const std::vector<std::string> main = {"map.png", "render.png", "trajectory.tum", "stats.csv", "summary.md"};
+  std::string shown, missing;
+  for (const std::string& name : runOutputFiles())
+  {
+    if (name == "render.png" && !render) continue;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(std::filesystem::path(dir) / name, ec))
+      missing += (missing.empty() ? "" : ", ") + name;
+    else if (std::find(main.begin(), main.end(), name) != main.end())
+      shown += (shown.empty() ? "" : ", ") + name;
+  }
+  std::string line = "# outputs in " + dir + "/";
+  if (!shown.empty()) line += " (" + shown + ")";
+  if (!missing.empty()) line += "; not written: " + missing;
+  return line + "\n";
+}
+
 std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const system::RunResults& results,
                                            const mrpt::maps::COccupancyGridMap2D& grid,
                                            const map::MapParams& map_params, const std::string& summary,
@@ -113,7 +133,9 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
   };
   attempt("trajectory.tum", [&](const std::string& p) { common::writeTum(p, results.trajectory); });
   attempt("keyframes.tum", [&](const std::string& p) { common::writeTum(p, results.keyframes); });
-  attempt("graph.graph", [&](const std::string& p) { graph::saveGraph(results.graph, p, results.switched_off); });
+  attempt("graph.graph", [&](const std::string& p) {
+    common::writeStreamAtomically(p, [&](std::ostream& out) { graph::writeGraph(results.graph, out, results.switched_off); });
+  });
   attempt("stats.csv", [&](const std::string& p) { common::writeTextAtomically(p, system::formatStatsCsv(results.stats)); });
   attempt("summary.md", [&](const std::string& p) { common::writeTextAtomically(p, summary); });
   return problems;

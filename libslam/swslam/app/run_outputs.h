@@ -22,6 +22,11 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
 /** The files writeRunOutputs writes (render.png included), by name. */
 std::vector<std::string> runOutputFiles();
 
+/** The run's last line: "# outputs in DIR/ (map.png, render.png, trajectory.tum, stats.csv,
+ * summary.md)", naming only those of them that are in `dir`, and "; not written: ..." every
+ * output (of runOutputFiles, render.png only if `render`) that is not. */
+std::string outputsLine(const std::string& dir, bool render);
+
 /** Table I figures of a run; with a ground truth, also ATE and RPE (poses associated within
  * `max_dt` seconds). Throws std::runtime_error if the ground truth does not overlap. */
 system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "test_support.h"
@@ -79,4 +80,17 @@ TEST(RunOutputs, EveryFileWrittenIsNamedByRunOutputFiles)
   for (const auto& f : app::runOutputFiles())
     if (f != "render.png") named.insert(f);
   EXPECT_EQ(written, named);
+}
+
+TEST(RunOutputs, TheLastLineNamesOnlyTheOutputsThatExist)
+{
+  // After a full disk it still listed stats.csv and summary.md, which were not written.
+  const std::string dir = test::tempDir("run_outputs_line");
+  for (const char* name : {"map.png", "trajectory.tum", "map.yaml"}) std::ofstream(dir + "/" + name) << "x";
+  EXPECT_EQ(app::outputsLine(dir, false), "# outputs in " + dir +
+                                         "/ (map.png, trajectory.tum); not written: map.gridmap.gz, map.pgm, map.bt, "
+                                         "keyframes.tum, graph.graph, stats.csv, summary.md\n");
+  for (const auto& name : app::runOutputFiles()) std::ofstream(dir + "/" + name) << "x";
+  EXPECT_EQ(app::outputsLine(dir, true),
+            "# outputs in " + dir + "/ (map.png, render.png, trajectory.tum, stats.csv, summary.md)\n");
 }

@@ -1,5 +1,7 @@
 #include <swslam/common/atomic_file.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -49,15 +51,27 @@ void writeAtomically(const std::string& path,
   }
 }
 
-void writeTextAtomically(const std::string& path, const std::string& content)
+std::string streamFailure()
+{
+  return std::string("the disk refused the data: ") + (errno != 0 ? std::strerror(errno) : "write error");
+}
+
+void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream& out)>& write)
 {
   writeAtomically(path, [&](const std::string& tmp) {
+    errno = 0;
     std::ofstream f(tmp, std::ios::binary);
-    if (!f) throw std::runtime_error("cannot create '" + tmp + "'");
-    f << content;
+    if (!f) throw std::runtime_error("cannot create '" + tmp + "': " + std::strerror(errno));
+    write(f);
+    // The last buffered bytes go out here: a full disk often shows only now.
     f.close();
-    if (!f) throw std::runtime_error("write error on '" + tmp + "'");
+    if (!f) throw std::runtime_error(streamFailure());
   });
+}
+
+void writeTextAtomically(const std::string& path, const std::string& content)
+{
+  writeStreamAtomically(path, [&](std::ostream& out) { out << content; });
 }
 
 }  // namespace swslam::common

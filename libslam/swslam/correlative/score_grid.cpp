@@ -2,50 +2,77 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
 namespace swslam::correlative
 {
-ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution,
-                         double sigma, int pad_cells, const std::vector<Eigen::Vector2d>& cover)
+namespace
+{
+/** "W x H cells (A x B m at R m)" for a grid's size in errors. */
+std::string describeSize(double width, double height, double resolution)
+{
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), "%.4g x %.4g cells (%.4g x %.4g m at %g m)", width, height, width * resolution,
+                height * resolution, resolution);
+  return buf;
+}
+}  // namespace
+
+ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double resolution, double sigma,
+                         int pad_cells, const std::vector<Eigen::Vector2d>& cover, size_t max_cells)
 {
   if (!(resolution > 0) || !(sigma > 0) || pad_cells < 0)
     throw std::invalid_argument("buildScoreGrid: resolution and sigma must be > 0, pad_cells >= 0");
   ScoreGrid g;
   g.resolution = resolution;
   g.pad_cells = pad_cells;
-  if (points.empty()) return g;
-  Eigen::Vector2d lo = points.front(), hi = points.front();
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
   for (const auto& p : points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+    if (p.allFinite())
+    {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  if (!(lo.x() <= hi.x())) return g;  // no finite point
+  // Every size in double first, checked against the budget before it becomes an int: points
+  // (or rays' origins) far apart, or a kernel wide for the cells, ask for more than any grid.
   const double reach = 3 * sigma;
-  const int reach_cells = static_cast<int>(std::ceil(reach / resolution));
+  const double reach_cells_d = std::ceil(reach / resolution);
   // The cells are laid from the points alone; whole cells are added for `cover`.
-  g.origin = lo - Eigen::Vector2d::Constant((reach_cells + pad_cells) * resolution);
-  Eigen::Vector2i top = g.cellOf(hi) + Eigen::Vector2i::Constant(reach_cells);
-  Eigen::Vector2i below = Eigen::Vector2i::Zero();
+  g.origin = lo - Eigen::Vector2d::Constant((reach_cells_d + pad_cells) * resolution);
+  auto cell = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d {
+    return ((p - g.origin) / resolution).array().floor().matrix();
+  };
+  Eigen::Vector2d top = cell(hi) + Eigen::Vector2d::Constant(reach_cells_d), below = Eigen::Vector2d::Zero();
   for (const auto& p : cover)
   {
     if (!p.allFinite()) continue;
-    const Eigen::Vector2i c = g.cellOf(p);
+    const Eigen::Vector2d c = cell(p);
     below = below.cwiseMax(-c);
     top = top.cwiseMax(c);
   }
-  g.origin -= below.cast<double>() * resolution;
-  g.width = top.x() + below.x() + 1;
-  g.height = top.y() + below.y() + 1;
+  const Eigen::Vector2d size = top + below + Eigen::Vector2d::Ones();
+  if (!(size.x() * size.y() <= static_cast<double>(max_cells)))
+    throw std::length_error("score grid of " + describeSize(size.x(), size.y(), resolution) +
+                            ": beyond the search's budget of " + std::to_string(max_cells) +
+                            " cells (its points, or the rays' origins, spread too far)");
+  const int reach_cells = static_cast<int>(reach_cells_d);  // within the grid's size: an int
+  g.origin -= below * resolution;
+  g.width = static_cast<int>(size.x());
+  g.height = static_cast<int>(size.y());
   g.cells.assign(static_cast<size_t>(g.width) * g.height, 0);
   // The max of the points' kernels is the kernel of the nearest point. The kernel is the
-  // product of its x and y factors, each computed once per column and row of a point's square.
+  // product of its x and y factors, each computed once per column and row of a point's square,
+  // which is clipped to the grid (far from the origin, rounding may shift a point's cell).
   const double inv2s2 = 1 / (2 * sigma * sigma);
   const int side = 2 * reach_cells + 1;
   std::vector<double> dx2(side), dy2(side), ex(side), ey(side);
   for (const auto& p : points)
   {
+    if (!p.allFinite()) continue;
     const Eigen::Vector2i c = g.cellOf(p);
     for (int k = 0; k < side; k++)
     {
@@ -56,10 +83,13 @@ ScoreGrid buildScoreGrid(const std::vector<Eigen::Vector2d>& points, double reso
       ex[k] = std::exp(-dx2[k] * inv2s2);
       ey[k] = std::exp(-dy2[k] * inv2s2);
     }
-    for (int ky = 0; ky < side; ky++)
+    const int x0 = c.x() - reach_cells, y0 = c.y() - reach_cells;
+    const int kx_begin = std::max(0, -x0), kx_end = std::min(side, g.width - x0);
+    const int ky_begin = std::max(0, -y0), ky_end = std::min(side, g.height - y0);
+    for (int ky = ky_begin; ky < ky_end; ky++)
     {
-      int16_t* row = g.cells.data() + static_cast<size_t>(c.y() - reach_cells + ky) * g.width + (c.x() - reach_cells);
-      for (int kx = 0; kx < side; kx++)
+      int16_t* row = g.cells.data() + static_cast<size_t>(y0 + ky) * g.width + x0;
+      for (int kx = kx_begin; kx < kx_end; kx++)
       {
         if (dx2[kx] + dy2[ky] > reach * reach) continue;
         const auto v = static_cast<int16_t>(255 * ex[kx] * ey[ky] + 0.5);
@@ -77,20 +107,36 @@ void markFreeSpace(ScoreGrid& g, const std::vector<Ray>& rays, int free_value)
   // In cell units: the point origin + s u lies in cell floor(o + s v), with o the origin's and
   // v the direction's coordinates divided by the resolution (no division per point).
   const double inv = 1 / g.resolution;
-  auto floorOf = [](double v) {
-    const int i = static_cast<int>(v);
-    return i - (v < i);
-  };
   for (const Ray& r : rays)
   {
     const Eigen::Vector2d d = r.hit - r.origin;
     const double length = d.norm();
-    if (!(length > 0)) continue;
+    if (!(length > 0) || !std::isfinite(length) || !r.origin.allFinite()) continue;
     const double ox = (r.origin.x() - g.origin.x()) * inv, oy = (r.origin.y() - g.origin.y()) * inv;
     const double vx = d.x() / length * inv, vy = d.y() / length * inv;
-    for (double s = 0; s < length; s += step)
+    // The part of the ray inside the grid, s in [enter, leave) (Liang-Barsky): a ray from far
+    // away walks only the grid's cells.
+    double enter = 0, leave = length;
+    for (const auto& [o, v, n] : {std::tuple{ox, vx, g.width}, std::tuple{oy, vy, g.height}})
     {
-      const int x = floorOf(ox + s * vx), y = floorOf(oy + s * vy);
+      if (v == 0)
+      {
+        if (!(o >= 0 && o < n)) leave = -1;
+        continue;
+      }
+      const double a = -o / v, b = (n - o) / v;
+      enter = std::max(enter, std::min(a, b));
+      leave = std::min(leave, std::max(a, b));
+    }
+    if (!(enter < leave)) continue;
+    // A ray starting outside is walked from where it enters; its walk is at most the grid's
+    // diagonal (far away, enter and leave keep no precision) and one step past its exit: the
+    // cell check below keeps what lies outside.
+    const double px = ox + enter * vx, py = oy + enter * vy;
+    const double last = std::min(leave - enter, std::hypot(g.width, g.height) * g.resolution) + step;
+    for (double s = 0; s < last && enter + s < length; s += step)
+    {
+      const int x = cellFloor(px + s * vx), y = cellFloor(py + s * vy);
       if (static_cast<unsigned>(x) >= static_cast<unsigned>(g.width) ||
           static_cast<unsigned>(y) >= static_cast<unsigned>(g.height))
         continue;
@@ -106,6 +152,10 @@ ScorePyramid::ScorePyramid(ScoreGrid base, int depth)
     throw std::invalid_argument("ScorePyramid: depth " + std::to_string(depth) +
                                 " needs a base grid padded by 2^depth - 1 cells (it has " +
                                 std::to_string(base.pad_cells) + ")");
+  if (base.cells.size() > kMaxPyramidCells / (static_cast<size_t>(depth) + 1))
+    throw std::length_error("score pyramid of " + std::to_string(depth + 1) + " levels of " +
+                            describeSize(base.width, base.height, base.resolution) + ": beyond the search's budget of " +
+                            std::to_string(kMaxPyramidCells) + " cells");
   levels.push_back(std::move(base));
   // Level h from level h-1: the window of side 2^h is the four windows of side 2^(h-1) at
   // offsets 0 and s = 2^(h-1) on each axis. A partner outside the grid scores 0

@@ -19,18 +19,14 @@ double translationCost(const SearchWindow& w, double d) { return w.cost_per_m * 
 void rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts, double theta,
                   const Eigen::Vector2d& t, std::vector<Eigen::Vector2i>& out)
 {
-  // g.cellOf(R p + t), in a loop without calls or growth (an integer floor of its own).
+  // g.cellOf(R p + t), in a loop without calls or growth.
   const double c = std::cos(theta), s = std::sin(theta);
   const double ox = g.origin.x(), oy = g.origin.y(), r = g.resolution;
-  auto floorOf = [](double v) {
-    const int i = static_cast<int>(v);
-    return i - (v < i);
-  };
   out.resize(pts.size());
   for (size_t k = 0; k < pts.size(); k++)
   {
     const double x = c * pts[k].x() - s * pts[k].y() + t.x(), y = s * pts[k].x() + c * pts[k].y() + t.y();
-    out[k] = {floorOf((x - ox) / r), floorOf((y - oy) / r)};
+    out[k] = {cellFloor((x - ox) / r), cellFloor((y - oy) / r)};
   }
 }
 std::vector<Eigen::Vector2i> rotatedCells(const ScoreGrid& g, const std::vector<Eigen::Vector2d>& pts,
@@ -48,9 +44,14 @@ int32_t sumAt(const ScoreGrid& g, const std::vector<Eigen::Vector2i>& cells, int
   return sum;
 }
 
-int halfCells(const SearchWindow& w, double resolution)
+/** The window's half side in cells, checked against kMaxWindowCells before it becomes an int. */
+int halfCells(double half_xy, double resolution)
 {
-  return static_cast<int>(std::floor(w.half_xy / resolution + 1e-9));
+  const double n = std::floor(half_xy / resolution + 1e-9);
+  if (!(n >= 0 && n <= kMaxWindowCells))
+    throw std::invalid_argument("search window: +-" + std::to_string(half_xy) + " m at " + std::to_string(resolution) +
+                                " m is not 0 to " + std::to_string(kMaxWindowCells) + " cells");
+  return static_cast<int>(n);
 }
 
 /** Smallest sum that reaches min_score (at least 1: a pose touching no cell is no result). */
@@ -64,7 +65,7 @@ class Lattice
 {
  public:
   Lattice(const ScoreGrid& base, const std::vector<Eigen::Vector2d>& points, const SearchWindow& w)
-      : w_(w), res_(base.resolution), n_(halfCells(w, base.resolution)), angles_(windowAngles(w)),
+      : w_(w), res_(base.resolution), n_(halfCells(w.half_xy, base.resolution)), angles_(windowAngles(w)),
         norm_(255.0 * points.size())
   {
     // Every offset searched is within [-n, n] cells on both axes, at every level (the levels
@@ -264,10 +265,16 @@ bool excluded(const SearchWindow& w, const Eigen::Vector2d& t)
 
 std::vector<double> windowAngles(const SearchWindow& w)
 {
+  // Counted in double and checked before any allocation (a step of 0 would be endless).
+  const double full = std::ceil(2 * M_PI / w.theta_step - 1e-9);
+  if (!(w.theta_step > 0) || !(full <= kMaxWindowAngles) || !(w.half_theta >= 0))
+    throw std::invalid_argument("search window: a rotation step of " + std::to_string(w.theta_step) +
+                                " rad (more than " + std::to_string(kMaxWindowAngles) +
+                                " rotations in a turn) or a half width of " + std::to_string(w.half_theta) + " rad");
   std::vector<double> out;
   if (w.half_theta >= M_PI)
   {
-    const int count = std::max(1, static_cast<int>(std::ceil(2 * M_PI / w.theta_step - 1e-9)));
+    const int count = std::max(1, static_cast<int>(full));
     const double step = 2 * M_PI / count;
     for (int k = -count / 2; k < count - count / 2; k++) out.push_back(w.centre.z() + k * step);
     return out;
@@ -279,7 +286,7 @@ std::vector<double> windowAngles(const SearchWindow& w)
 
 int depthForWindow(double half_xy, double resolution)
 {
-  const int span = 2 * static_cast<int>(std::floor(half_xy / resolution + 1e-9)) + 1;
+  const int span = 2 * halfCells(half_xy, resolution) + 1;
   int h = 0;
   while ((1 << h) < span) h++;
   return h;

@@ -16,6 +16,13 @@
 
 namespace swslam::correlative
 {
+/** A window's translations: at most +-this many cells on each axis ([correlative] allows 256);
+ * a wider window (its bound tables grow with its square) throws std::invalid_argument. */
+constexpr int kMaxWindowCells = 1024;
+/** A window's rotations: at most this many in a turn (a step of 0.1 degree, [correlative]'s
+ * smallest); a finer step throws std::invalid_argument. */
+constexpr int kMaxWindowAngles = 3600;
+
 /** The poses tried: rotations theta = centre.z + k theta_step within +-half_theta (the whole
  * circle once when half_theta >= pi, the step then shortened to divide it evenly), and for each
  * the translations centre.xy + (i, j) * resolution with |i|, |j| <= half_xy / resolution.
@@ -53,7 +60,8 @@ struct SearchResult
   std::vector<size_t> evaluated_by_level, expanded_by_level;
 };
 
-/** The window's rotations, in the order searched. */
+/** The window's rotations, in the order searched. Throws std::invalid_argument for a step that
+ * is not positive or gives more than kMaxWindowAngles in a turn. */
 std::vector<double> windowAngles(const SearchWindow& w);
 
 /** The pose of the window's lattice with the best objective among those whose score is at
@@ -106,7 +114,8 @@ MatchComparison compareMatches(const ScoreGrid& grid, const std::vector<Eigen::V
                                const SearchWindow& w, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                double common_points_fraction, double goes_on_ratio);
 
-/** Pyramid depth needed for a window: the smallest h with 2^h >= 2 half_xy / resolution + 1. */
+/** Pyramid depth needed for a window: the smallest h with 2^h >= 2 half_xy / resolution + 1.
+ * Throws std::invalid_argument beyond kMaxWindowCells. */
 int depthForWindow(double half_xy, double resolution);
 
 }  // namespace swslam::correlative

@@ -14,7 +14,9 @@ ScorePyramid searchPyramid(const std::vector<Ray>& reference, const CorrelativeP
     hits.push_back(r.hit);
     if (origins.empty() || r.origin != origins.back()) origins.push_back(r.origin);
   }
-  auto grid = buildScoreGrid(hits, p.resolution, p.sigma, (1 << depth) - 1, origins);
+  // The pyramid's budget shared by its levels: a grid too large for it is refused before it is built.
+  auto grid = buildScoreGrid(hits, p.resolution, p.sigma, (1 << depth) - 1, origins,
+                             kMaxPyramidCells / (static_cast<size_t>(depth) + 1));
   if (p.free_space_score < 0)
     markFreeSpace(grid, reference, static_cast<int>(std::lround(255 * p.free_space_score)));
   return ScorePyramid(std::move(grid), depth);

@@ -16,7 +16,8 @@ namespace swslam::correlative
 {
 /** The score pyramid of reference rays (in the reference sensor frame), deep enough for the
  * search window: the kernels of their hits, and free_space_score on the cells they cross. The
- * caller leaves out rays longer than max_range. */
+ * caller leaves out rays longer than max_range. Throws std::length_error if the pyramid would
+ * hold more than kMaxPyramidCells cells (rays spread too far: a sensor pose far out). */
 ScorePyramid searchPyramid(const std::vector<Ray>& reference, const CorrelativeParams& p);
 
 /** The search window of the parameters (window_xy, window_theta, theta_step, motion prior)

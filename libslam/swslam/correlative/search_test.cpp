@@ -498,3 +498,72 @@ TEST(CorrelativeSearch, ScanRaysStartAtTheSensorAndStopAtMaxRange)
   EXPECT_EQ(rays[0].hit, Eigen::Vector2d(1, 0));
   EXPECT_EQ(scanRays(s, 5.0).size(), 3u);
 }
+
+TEST(CorrelativeGrid, ExtremeCoordinatesNeitherWriteOutsideTheGridNorAllocatePastTheBudget)
+{
+  // A scan mounted at x = 1e30 put a keyframe's rays there: the grid's size and cells came
+  // from int conversions out of range, and buildScoreGrid wrote before its cells (threaded
+  // swslam: heap corruption). Sizes are now computed in double and checked, writes clipped.
+  const double res = 0.1, sigma = 0.1;
+  const int pad = 63;  // the default window's pyramid (depth 6)
+  const std::vector<Eigen::Vector2d> far = {{1e30, 0}, {1e30, 1e30}, {-1e30, 5}};
+  for (const Eigen::Vector2d& at : far)
+  {
+    // Hits that far, together: a small grid there (1e30 + 5 m is 1e30 in double), whole.
+    const std::vector<Eigen::Vector2d> hits = {at, at + Eigen::Vector2d(5, 0), at + Eigen::Vector2d(0, 3)};
+    ScoreGrid g = buildScoreGrid(hits, res, sigma, pad, {at});
+    ASSERT_GT(g.width, 0);
+    EXPECT_LE(g.width, pad + 2 * 3 + 2) << at.transpose();
+    EXPECT_EQ(g.cells.size(), static_cast<size_t>(g.width) * g.height);
+    markFreeSpace(g, {{at, at + Eigen::Vector2d(5, 0)}, {Eigen::Vector2d::Zero(), at}}, -255);
+    const ScorePyramid pyr(g, 6);
+    // A scan near the origin, searched around the origin and around the far place: no match,
+    // and every cell looked up through cellFloor's clamp.
+    std::mt19937 rng(1);
+    const auto pts = randomPoints(rng, 50, 5.0);
+    SearchWindow w;
+    w.half_xy = 3.0;
+    EXPECT_FALSE(searchBranchAndBound(pyr, pts, w, 0.1));
+    w.centre.head<2>() = at;
+    (void)searchBranchAndBound(pyr, pts, w, 0.1);
+    EXPECT_EQ(scoreAt(g, pts, {1e30, -1e30, 0}), 0);
+    // Rays from the vehicle (0, 0) to there: the grid would span 1e31 cells: refused.
+    EXPECT_THROW(buildScoreGrid(hits, res, sigma, pad, {Eigen::Vector2d::Zero()}), std::length_error) << at.transpose();
+  }
+  // Points 10 km apart, as a sensor mounted at x = 1e4 gave (1.16 GB before): 1e10 cells.
+  EXPECT_THROW(buildScoreGrid({{0, 0}, {1e4, 1e4}}, res, sigma, pad), std::length_error);
+  EXPECT_THROW(buildScoreGrid({{0, 0}, {1e15, 0}, {0, 1e15}}, res, sigma, pad), std::length_error);
+  // A smaller budget is the caller's to give; a kernel wider than the budget is refused too.
+  EXPECT_THROW(buildScoreGrid({{0, 0}, {3, 3}}, res, sigma, 0, {}, 100), std::length_error);
+  EXPECT_THROW(buildScoreGrid({{0, 0}}, 1e-300, sigma), std::length_error);
+  EXPECT_NO_THROW(buildScoreGrid({{0, 0}, {3, 3}}, res, sigma, 0, {}, 40 * 40));
+  // The search's pyramid shares its budget among its levels: 7 levels of 9000 x 9000 cells
+  // (a ray of 1.3 km) is past it, refused before anything is allocated.
+  CorrelativeParams p;
+  EXPECT_THROW(searchPyramid({{{0, 0}, {900, 900}}}, p), std::length_error);
+  // Rays crossing the grid from far away: only the grid's cells are walked (a ray from 1e6 m
+  // took 2e7 steps; from 1e30 the steps stopped moving, s + step == s, and never ended).
+  ScoreGrid g = buildScoreGrid({{0, 0}, {2, 2}}, res, sigma, 0);
+  markFreeSpace(g, {{{-1e30, 0.05}, {1e30, 0.05}}, {{1.0, -1e300}, {1.0, 1e300}}, {{-1e6, 0.05}, {1e6, 0.05}}}, -255);
+  const Eigen::Vector2i mid = g.cellOf({0.0, 0.05}), left = g.cellOf({-0.35, 0.05});
+  EXPECT_EQ(g.at(left.x(), left.y()), -255);
+  EXPECT_GT(g.at(mid.x(), mid.y()), 0);  // a hit's kernel keeps its value
+  EXPECT_EQ(cellFloor(1e30), kFarCell);
+  EXPECT_EQ(cellFloor(-1e30), -kFarCell);
+  EXPECT_EQ(cellFloor(std::numeric_limits<double>::quiet_NaN()), kFarCell);
+  EXPECT_EQ(cellFloor(-2.5), -3);
+}
+
+TEST(CorrelativeSearch, WindowsBeyondTheirBoundsAreRefusedBeforeAnyAllocation)
+{
+  SearchWindow w;
+  w.theta_step = 1e-9;
+  EXPECT_THROW(windowAngles(w), std::invalid_argument);
+  w.theta_step = 0;
+  EXPECT_THROW(windowAngles(w), std::invalid_argument);
+  w.theta_step = mrpt::DEG2RAD(0.1);
+  EXPECT_EQ(windowAngles(w).size(), static_cast<size_t>(kMaxWindowAngles));
+  EXPECT_THROW(depthForWindow(1e9, 0.1), std::invalid_argument);
+  EXPECT_THROW(depthForWindow(1e300, 1e-300), std::invalid_argument);
+  EXPECT_EQ(depthForWindow(kMaxWindowCells * 0.1, 0.1), 12);  // 2049 cells across
+}

@@ -57,12 +57,29 @@ TrajectoryEvaluation evaluateTrajectory(const std::vector<common::StampedPose>& 
   e.matched = a.pairs.size();
   e.est_unmatched = a.est_unmatched;
   e.gt_unmatched = a.gt_unmatched;
+  for (size_t i = 1; i < est.size(); i++) e.est_steps_back += est[i].t <= est[i - 1].t;
   e.max_dt = max_dt;
   e.segment_length = segment_length;
   e.ate = absoluteTrajectoryError(a.pairs);
   e.rpe_step = relativePoseError(a.pairs, consecutivePairs(a.pairs.size()));
   e.rpe_segment = relativePoseError(a.pairs, distancePairs(a.pairs, segment_length));
   return e;
+}
+
+std::string unmatchedWarning(const TrajectoryEvaluation& e)
+{
+  if (e.est_unmatched == 0) return "";
+  char buf[400];
+  std::snprintf(buf, sizeof(buf),
+                "scored %zu of the %zu estimated poses: %zu have no ground-truth pose within %g s of their stamp",
+                e.matched, e.est_poses, e.est_unmatched, e.max_dt);
+  std::string s = buf;
+  if (e.est_steps_back > 0)
+    s += " (the estimate's stamps step back or repeat " + std::to_string(e.est_steps_back) +
+         " time(s): were its scans' stamps out of order?)";
+  else
+    s += " (does the ground truth cover the run, at its rate?)";
+  return s;
 }
 
 RelationsResult evaluateRelations(const std::vector<common::StampedPose>& est,

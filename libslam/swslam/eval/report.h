@@ -14,6 +14,7 @@ struct TrajectoryEvaluation
 {
   size_t est_poses = 0, gt_poses = 0;
   size_t matched = 0, est_unmatched = 0, gt_unmatched = 0;
+  size_t est_steps_back = 0;  ///< estimated poses stamped at or before the one before them
   double max_dt = 0, segment_length = 0;
   AteResult ate;
   RpeResult rpe_step;     ///< consecutive associated poses
@@ -31,6 +32,11 @@ RelationsResult evaluateRelations(const std::vector<common::StampedPose>& est,
                                   const std::vector<Relation>& relations, double max_dt);
 
 std::string formatTrajectoryEvaluation(const TrajectoryEvaluation& e);
+
+/** What to warn when part of the estimate could not be matched by stamp, and so is not
+ * scored: "scored M of the N estimated poses: K have no ground-truth pose within max_dt s",
+ * with the estimate's steps back in time if it has any; "" when every pose was matched. */
+std::string unmatchedWarning(const TrajectoryEvaluation& e);
 std::string formatRelationsResult(const RelationsResult& r);
 
 /** readTum, but an empty trajectory is an error naming the file. */

@@ -1,6 +1,7 @@
 #include <swslam/io/bag_reader.h>
 
 #include <swslam/io/ros_conversion.h>
+#include <swslam/sensor/input_bounds.h>
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -205,7 +206,11 @@ void BagReader::findSensorPose()
     }
   }
   if (poseInAncestor(transforms, scan_frame, base_frame, sensor_pose_))
+  {
     sensor_pose_source_ = "/tf_static '" + base_frame + "' -> '" + scan_frame + "'";
+    if (const std::string problem = sensor::mountingProblem(sensor_pose_); !problem.empty())
+      throw std::runtime_error("bag '" + path_ + "': " + sensor_pose_source_ + ": " + problem);
+  }
   else
     sensor_pose_source_ = "identity (no /tf_static transform from '" + base_frame + "' to '" + scan_frame + "')";
 }

@@ -49,8 +49,9 @@ class BagReader
  public:
   /** Opens the bag and picks its topics. Throws std::runtime_error naming the problem if the
    * bag cannot be opened (missing, not a bag, truncated: its index is at its end), if a topic
-   * asked for is not in it or not of the right type, or if a topic is not asked for and the
-   * bag has several of that type. */
+   * asked for is not in it or not of the right type, if a topic is not asked for and the
+   * bag has several of that type, or if its /tf_static mounts the scanner beyond the bound of
+   * sensor/input_bounds.h. */
   BagReader(const std::string& path, const BagReaderOptions& opts);
   ~BagReader();
 

@@ -3,6 +3,7 @@
 #include <swslam/io/bag_reader.h>
 #include <swslam/io/ros_conversion.h>
 #include <swslam/io/scan_source.h>
+#include <swslam/sensor/input_bounds.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -165,9 +166,11 @@ TEST(BagReader, RaysKeepTheirAnglesInAnAsymmetricOrReversedFan)
   for (const bool reversed : {false, true})
   {
     sensor_msgs::LaserScan msg = m;
+    msg.angle_max = -0.5f + 0.01f * 100;
     if (reversed)
     {
-      msg.angle_min = -0.5f + 0.01f * 100;  // the same rays, listed clockwise
+      msg.angle_min = -0.5f + 0.01f * 100;  // the same rays, listed clockwise (right to left)
+      msg.angle_max = -0.5f;
       msg.angle_increment = -0.01f;
       std::reverse(msg.ranges.begin(), msg.ranges.end());
     }
@@ -184,6 +187,102 @@ TEST(BagReader, RaysKeepTheirAnglesInAnAsymmetricOrReversedFan)
   }
   m.angle_increment = 0;
   EXPECT_THROW(scanFromRos(m, "/scan", mount), std::invalid_argument);
+}
+
+namespace
+{
+/** The bag of BagSpec's defaults with `last` appended on /scan after its messages, read to
+ * the end: the messages read, and the error that stopped the reading. */
+std::pair<size_t, std::string> readWithLastScan(const std::string& name, sensor_msgs::LaserScan last)
+{
+  const std::string path = writeBag(name, {});
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Append);
+    last.header.stamp = ros::Time(kT0 + 5);
+    bag.write("/scan", last.header.stamp, last);
+  }
+  BagReader r(path, {});
+  mrpt::obs::CObservation::Ptr obs;
+  size_t read = 0;
+  const std::string e = errorOf([&] {
+    while (r.next(obs)) read++;
+  });
+  return {read, e};
+}
+}  // namespace
+
+TEST(BagReader, AScanWhoseAnglesDisagreeIsANamedError)
+{
+  // A negative increment with angle_min < angle_max read as a scan turned by half a turn
+  // (the trajectory by 90 degrees), with no word.
+  sensor_msgs::LaserScan m = scanMessage(0);  // 181 rays, -90 to +90 degrees
+  const mrpt::poses::CPose3D mount;
+  const auto error = [&](const sensor_msgs::LaserScan& msg) {
+    return errorOf([&] { scanFromRos(msg, "/scan", mount); });
+  };
+  EXPECT_EQ(error(m), "");
+  sensor_msgs::LaserScan inconsistent = m;
+  inconsistent.angle_increment = -m.angle_increment;
+  EXPECT_NE(error(inconsistent).find("a LaserScan whose angles disagree: angle_min -1.5708 + 180 x angle_increment "
+                                     "-0.0174533 = -4.71239 rad, but angle_max is 1.5708 rad (a negative increment "
+                                     "from angle_min up to a larger angle_max)"),
+            std::string::npos)
+      << error(inconsistent);
+  sensor_msgs::LaserScan upside = m;  // a positive increment down to a smaller angle_max
+  std::swap(upside.angle_min, upside.angle_max);
+  EXPECT_NE(error(upside).find("a positive increment from angle_min down to a smaller angle_max"), std::string::npos)
+      << error(upside);
+  // Within half an increment, or stating the end of the last ray's increment (a full turn's
+  // 2 pi): agrees. Off by more: the increment does not fit the rays.
+  sensor_msgs::LaserScan close = m;
+  close.angle_max += 0.4f * m.angle_increment;
+  EXPECT_EQ(error(close), "");
+  sensor_msgs::LaserScan past = m;
+  past.angle_max += m.angle_increment;
+  EXPECT_EQ(error(past), "");
+  sensor_msgs::LaserScan off = m;
+  off.angle_max += 2.5f * m.angle_increment;
+  EXPECT_NE(error(off).find("off by more than half an increment"), std::string::npos) << error(off);
+  sensor_msgs::LaserScan nan = m;
+  nan.angle_max = NAN;
+  EXPECT_NE(error(nan).find("angle_max nan"), std::string::npos) << error(nan);
+
+  // In a bag: the reading stops at it, naming the message.
+  const auto [read, e] = readWithLastScan("angles", inconsistent);
+  EXPECT_EQ(read, 20u);
+  EXPECT_NE(e.find("message #20 of 21 cannot be read (/scan at"), std::string::npos) << e;
+  EXPECT_NE(e.find("angles disagree"), std::string::npos) << e;
+}
+
+TEST(BagReader, AScanOfMoreRaysThanARawlogAllowsIsRefused)
+{
+  // One LaserScan of 10 million rays was read (639 MB); rawlogs refuse more than 2^20.
+  sensor_msgs::LaserScan big = scanMessage(0);
+  big.ranges.assign(sensor::kMaxScanRays + 1, 2.0f);
+  big.angle_increment = static_cast<float>(2 * M_PI / big.ranges.size());
+  big.angle_min = -M_PI;
+  big.angle_max = big.angle_min + big.angle_increment * (big.ranges.size() - 1);
+  const std::string expected = "a scan of 1048577 rays (more than 1048576: a corrupt count)";
+  EXPECT_EQ(errorOf([&] { scanFromRos(big, "/scan", {}); }), expected);
+  const auto [read, e] = readWithLastScan("many_rays", big);
+  EXPECT_EQ(read, 20u);
+  EXPECT_NE(e.find("message #20 of 21 cannot be read (/scan at"), std::string::npos) << e;
+  EXPECT_NE(e.find(expected), std::string::npos) << e;
+}
+
+TEST(BagReader, AStaticTransformMountingTheScannerBeyondTheBoundIsANamedError)
+{
+  // /tf_static saying x = 1e30 corrupted the search's grid in threaded swslam.
+  for (const double x : {1e30, 1e4, 60.0})
+  {
+    BagSpec spec;
+    spec.tf_static = {transformToRos(mrpt::poses::CPose3D(x, 0, 0.1, 0, 0, 0), "base_link", "laser", ros::Time(kT0))};
+    const std::string path = writeBag("far_mount", spec);
+    const std::string e = errorOf([&] { BagReader r(path, {}); });
+    EXPECT_NE(e.find("bag '" + path + "': /tf_static 'base_link' -> 'laser': sensor mounted at ("), std::string::npos)
+        << e;
+    EXPECT_NE(e.find("beyond the 50 m"), std::string::npos) << e;
+  }
 }
 
 TEST(BagReader, TopicsAreChosenOrNamed)

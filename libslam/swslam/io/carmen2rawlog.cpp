@@ -1,14 +1,14 @@
 #include <swslam/io/carmen2rawlog.h>
 
-#include <swslam/common/atomic_file.h>
+#include <swslam/common/gzip_output.h>
 #include <swslam/common/tum_io.h>
 
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -37,40 +37,53 @@ CarmenStats carmen2rawlog(const Carmen2RawlogOptions& opts, CarmenLogReader::War
   CarmenLogReader reader(opts.input, opts.params, std::move(warn));
   std::vector<common::StampedPose> reference;
   std::string damage;
-  common::writeAtomically(opts.output, [&](const std::string& tmp) {
-    mrpt::io::CFileGZOutputStream out;
-    if (!out.open(tmp, opts.compress_level))
-      throw std::runtime_error("carmen2rawlog: cannot write '" + tmp + "'");
-    auto archive = mrpt::serialization::archiveFrom(out);
-    CarmenRecord rec;
-    for (;;)
-    {
-      try
+  // What the input could not give is no failure to write the rawlog: said as itself.
+  std::optional<std::runtime_error> unreadable;
+  const auto fail = [&](const std::string& why) {
+    unreadable.emplace(why);
+    throw *unreadable;
+  };
+  try
+  {
+    common::writeGzipAtomically(opts.output, opts.compress_level, [&](mrpt::io::CStream& out) {
+      auto archive = mrpt::serialization::archiveFrom(out);
+      CarmenRecord rec;
+      for (;;)
       {
-        if (!reader.next(rec)) break;
+        try
+        {
+          if (!reader.next(rec)) break;
+        }
+        catch (const GzipError& e)
+        {
+          // The lines before the damage are good: they are converted, and the damage said.
+          damage = e.what();
+          break;
+        }
+        catch (const std::exception& e)
+        {
+          fail(e.what());
+        }
+        if (opts.reference_odometry && rec.reference_pose)  // only scans carry one
+        {
+          mrpt::obs::CObservationOdometry odometry;
+          odometry.sensorLabel = "REFERENCE_ODOMETRY";
+          odometry.timestamp = rec.observation->timestamp;
+          odometry.odometry = *rec.reference_pose;
+          archive << odometry;
+        }
+        archive << *rec.observation;
+        if (rec.reference_pose) reference.push_back({rec.timestamp, *rec.reference_pose});
       }
-      catch (const GzipError& e)
-      {
-        // The lines before the damage are good: they are converted, and the damage said.
-        damage = e.what();
-        break;
-      }
-      if (opts.reference_odometry && rec.reference_pose)  // only scans carry one
-      {
-        mrpt::obs::CObservationOdometry odometry;
-        odometry.sensorLabel = "REFERENCE_ODOMETRY";
-        odometry.timestamp = rec.observation->timestamp;
-        odometry.odometry = *rec.reference_pose;
-        archive << odometry;
-      }
-      archive << *rec.observation;
-      if (rec.reference_pose) reference.push_back({rec.timestamp, *rec.reference_pose});
-    }
-    if (reader.stats().scans() == 0 && !damage.empty()) throw std::runtime_error("carmen2rawlog: " + damage);
-    if (reader.stats().scans() == 0)
-      throw std::runtime_error("carmen2rawlog: no laser scan in '" + opts.input +
-                               "' (is it a CARMEN log?)");
-  });
+      if (reader.stats().scans() == 0 && !damage.empty()) fail("carmen2rawlog: " + damage);
+      if (reader.stats().scans() == 0) fail("carmen2rawlog: no laser scan in '" + opts.input + "' (is it a CARMEN log?)");
+    });
+  }
+  catch (const std::exception&)
+  {
+    if (unreadable) throw *unreadable;
+    throw;
+  }
   if (!opts.ground_truth.empty()) common::writeTum(opts.ground_truth, reference);
   CarmenStats stats = reader.stats();
   stats.damage = damage;

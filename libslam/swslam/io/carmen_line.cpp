@@ -1,6 +1,9 @@
 #include <swslam/io/carmen_line.h>
 
 #include <swslam/common/tum_io.h>
+#include <swslam/sensor/input_bounds.h>
+
+#include <mrpt/poses/CPose3D.h>
 
 #include <cerrno>
 #include <cmath>
@@ -9,6 +12,11 @@
 
 namespace swslam::io
 {
+mrpt::poses::CPose2D carmenLaserMounting(const CarmenLaser& laser)
+{
+  return mrpt::poses::CPose2D(laser.laser_pose) - mrpt::poses::CPose2D(laser.robot_pose);
+}
+
 namespace
 {
 /** Largest beam or remission count accepted: far above any real 2D scanner, low enough
@@ -167,6 +175,10 @@ CarmenLine parseCarmenLine(const std::string& line)
     laser.has_laser_pose = laser.has_pose = true;
     laser.laser_pose = f.pose("laser_pose_x y theta");
     laser.robot_pose = f.pose("robot_pose_x y theta");
+    // Each pose may be within the trajectory's bounds and the two still far apart.
+    if (const std::string problem = sensor::mountingProblem(mrpt::poses::CPose3D(carmenLaserMounting(laser)));
+        !problem.empty())
+      throw CarmenLineError(msg + ": laser_pose and robot_pose put the " + problem);
     for (const char* what : {"laser_tv", "laser_rv", "forward_safety_dist", "side_safety_dist",
                              "turn_axis"})
       f.number(what);

@@ -11,6 +11,7 @@
 // Angles in radians, ranges in metres, timestamps in seconds.
 
 #include <mrpt/math/TPose2D.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <stdexcept>
 #include <string>
@@ -48,6 +49,10 @@ struct CarmenLaser
   mrpt::math::TPose2D odometry_pose;
   double timestamp = 0;  ///< ipc_timestamp [s]
 };
+
+/** The laser's pose on the robot that a ROBOTLASER line's two global poses state:
+ * robot_pose^-1 (+) laser_pose. */
+mrpt::poses::CPose2D carmenLaserMounting(const CarmenLaser& laser);
 
 struct CarmenOdometry
 {

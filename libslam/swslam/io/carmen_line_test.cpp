@@ -90,6 +90,9 @@ TEST(CarmenLine, MalformedLinesNameTheProblem)
       {"ODOM 1 -3e9 0 0 0 0 1 h 1", "position beyond"},           // no trajectory's position
       {"FLASER 1 1 2.5e73 0 0 0 0 0 1 h 1", "position beyond"},   // truth pose of the fuzz crash
       {"ODOM 1 2 0 0 0 0 inf h 1", "ipc_timestamp"},               // non-finite timestamp
+      // a laser 100 m from its robot: no mounting (sensor/input_bounds.h)
+      {"ROBOTLASER1 0 -1.2 2 0.02 20 0.01 0 2 4 4 0 103 4 0 3 4 0 0 0 0 0 0 10.3 h 10.3",
+       "laser_pose and robot_pose put the sensor mounted at (100, 0, 0) m, 100 m from the vehicle: beyond the 50 m"},
       {"PARAM lonely", "param_value"}};
   for (const auto& [text, expected] : cases)
   {

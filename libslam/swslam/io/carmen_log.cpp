@@ -1,8 +1,11 @@
 #include <swslam/io/carmen_log.h>
 
 #include <swslam/common/unix_time.h>
+#include <swslam/io/text_encoding.h>
+#include <swslam/sensor/input_bounds.h>
 
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/poses/CPose3D.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -13,6 +16,18 @@
 
 namespace swslam::io
 {
+namespace
+{
+/** A PARAM value as a finite number, if it is one. */
+std::optional<double> numericParam(const std::string& value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (end == value.c_str() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+}  // namespace
+
 CarmenLogReader::CarmenLogReader(const std::string& path, const CarmenParams& params,
                                  WarningSink warn)
     : path_(path), params_(params), warn_(std::move(warn)), progress_(path)
@@ -82,8 +97,24 @@ bool CarmenLogReader::nextLine(std::string& line)
 void CarmenLogReader::prescan()
 {
   // First pass: each laser's readings (saturation) and each stream's timestamps (repair
-  // period). Malformed lines are skipped silently here; the second pass reports them.
+  // period), and the lasers' mountings that the PARAM lines state. Malformed lines are
+  // skipped silently here; the second pass reports them.
   open();
+  {
+    std::string head(4096, '\0');
+    try
+    {
+      head.resize(file_->read(head.data(), head.size()));
+    }
+    catch (const GzipError&)
+    {
+      head.clear();  // the second pass reports it, after the lines before it
+    }
+    if (const std::string problem = wideTextProblem(head); !problem.empty())
+      throw std::runtime_error("carmen: '" + path_ + "' " + problem);
+    open();
+  }
+  CarmenLogParams mountings;
   std::map<std::string, SaturationDetector> detectors;
   std::map<std::string, std::vector<double>> times;
   size_t stamps = 0, out_of_range = 0, first_out_line = 0, odom_lines = 0;
@@ -109,6 +140,17 @@ void CarmenLogReader::prescan()
     {
       continue;
     }
+    if (line.kind == CarmenLine::Kind::Param && carmenParamIsUsed(line.param_name))
+      if (const auto v = numericParam(line.param_value))
+      {
+        mountings[line.param_name] = *v;
+        for (const std::string sensor : {"front", "rear"})
+          if (const std::string problem = sensor::mountingProblem(mrpt::poses::CPose3D(carmenOffsetPose(sensor, mountings)));
+              !problem.empty())
+            throw std::runtime_error("carmen: '" + path_ + "' line " + std::to_string(line_no_) + ": PARAM " +
+                                     line.param_name + " " + line.param_value + " puts the " + sensor + " laser's " +
+                                     problem + ": not converted");
+      }
     if (line.kind == CarmenLine::Kind::Odometry) odom_lines++;
     if (line.kind == CarmenLine::Kind::Laser) laser_odometry |= line.laser.has_odometry;
     const bool odometry = line.kind == CarmenLine::Kind::Odometry && !params_.laser_only;
@@ -181,14 +223,12 @@ void CarmenLogReader::warn(size_t& printed, const std::string& msg)
 
 void CarmenLogReader::addParam(const std::string& name, const std::string& value)
 {
-  char* end = nullptr;
-  const double v = std::strtod(value.c_str(), &end);
-  const bool numeric = end != value.c_str() && *end == '\0' && std::isfinite(v);
+  const auto v = numericParam(value);
   // Non-numeric values (on/off, device names) are fine for parameters the converter ignores.
-  if (!numeric && carmenParamIsUsed(name))
+  if (!v && carmenParamIsUsed(name))
     throw CarmenLineError("PARAM " + name + ": value '" + value + "' is not a finite number");
   stats_.params++;
-  if (numeric) log_params_[name] = v;
+  if (v) log_params_[name] = *v;
 }
 
 bool CarmenLogReader::stampInRange(double raw)

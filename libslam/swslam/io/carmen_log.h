@@ -92,7 +92,9 @@ struct CarmenRecord
  * streams the conversion. Warnings go to `warn` (default: stderr), the first
  * params.max_printed_warnings of each kind; stats() counts all of them. A line whose timestamp
  * is beyond +-2200-01-01 in seconds (common/unix_time.h) is skipped and counted; if most are,
- * the constructor refuses the log (std::runtime_error). */
+ * the constructor refuses the log (std::runtime_error), as it does a log in UTF-16 or UTF-32
+ * (text_encoding.h) and one whose PARAM lines mount a laser beyond the bound of
+ * sensor/input_bounds.h. A ROBOTLASER line whose two poses do is malformed (skipped, counted). */
 class CarmenLogReader
 {
  public:

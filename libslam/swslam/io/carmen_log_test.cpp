@@ -409,6 +409,85 @@ TEST(CarmenLog, BadInputGivesClearErrors)
   EXPECT_FALSE(std::filesystem::exists(opts.output));
 }
 
+TEST(CarmenLog, ALogInUtf16IsRefusedNamingItsEncoding)
+{
+  // It read no line ("no laser scan ... 0 odometry readings"), and swslam-carmen2rawlog said
+  // "cannot write 'out.rawlog'".
+  const auto dir = swslam::test::tempDir("carmen_utf16");
+  const std::string text = excerpt();
+  for (const bool bom : {true, false})
+  {
+    std::string wide = bom ? std::string("\xFF\xFE", 2) : "";
+    for (char c : text) wide += std::string{c, '\0'};
+    const std::string path = dir + "/utf16.log";
+    std::ofstream(path, std::ios::binary) << wide;
+    try
+    {
+      swslam::io::CarmenLogReader reader(path, swslam::io::CarmenParams(), [](const std::string&) {});
+      FAIL() << "a UTF-16 log was read";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("carmen: '" + path + "' is UTF-16LE text ("), std::string::npos) << e.what();
+    }
+    swslam::io::Carmen2RawlogOptions opts;
+    opts.input = path;
+    opts.output = dir + "/out.rawlog";
+    try
+    {
+      swslam::io::carmen2rawlog(opts, [](const std::string&) {});
+      FAIL() << "a UTF-16 log was converted";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("UTF-16LE"), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find("cannot write"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(opts.output));
+  }
+}
+
+TEST(CarmenLog, ALaserMountedBeyondTheBoundByItsParamsIsRefused)
+{
+  const auto dir = swslam::test::tempDir("carmen_mount");
+  for (const std::string value : {"1e30", "1e4", "-60"})
+  {
+    std::string text = excerpt();
+    const std::string param = "PARAM robot_rearlaser_offset 0.3";
+    text.replace(text.find(param), param.size(), "PARAM robot_rearlaser_offset " + value);
+    const std::string path = writeLog(dir, text);
+    try
+    {
+      convert(path, swslam::io::CarmenParams());
+      FAIL() << value << ": converted";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("line 3: PARAM robot_rearlaser_offset " + value +
+                                           " puts the rear laser's sensor mounted at ("),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("beyond the 50 m"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(CarmenLog, ARobotLaserLineMountedBeyondTheBoundIsSkippedAndCounted)
+{
+  std::string text = excerpt();
+  // The ROBOTLASER1 line's robot pose moved 100 m from its laser pose.
+  const std::string robot = " 3 4 0.5 0 0 0 0 0 10.3 h 10.3";
+  ASSERT_NE(text.find(robot), std::string::npos);
+  text.replace(text.find(robot), robot.size(), " -97 4 0.5 0 0 0 0 0 10.3 h 10.3");
+  const auto dir = swslam::test::tempDir("carmen_robotlaser_mount");
+  const Converted c = convert(writeLog(dir, text), swslam::io::CarmenParams());
+  EXPECT_EQ(c.stats.malformed, 2u);  // line 8, and this one
+  EXPECT_EQ(c.stats.lasers.count("ROBOTLASER1"), 0u);
+  bool said = false;
+  for (const auto& w : c.warnings) said |= w.find("laser_pose and robot_pose put the sensor mounted at") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
 namespace
 {
 /** A log of `n` FLASER scans 0.1 s apart from `t0`, one ODOM line before each, gzip-compressed

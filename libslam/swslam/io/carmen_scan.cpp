@@ -19,19 +19,6 @@ std::optional<double> lookup(const CarmenLogParams& p, const std::string& name)
 
 double deg(double rad) { return rad * 180.0 / M_PI; }
 
-/** Sensor pose on the robot from PARAM offsets (CARMEN convention: the front laser looks
- * forward `offset` metres ahead of the centre, the rear laser backwards, `offset` behind). */
-mrpt::poses::CPose2D offsetPose(const std::string& sensor, const CarmenLogParams& p)
-{
-  const std::string key = sensor == "front" ? "robot_frontlaser_" : "robot_rearlaser_";
-  if (sensor != "front" && sensor != "rear") return {};
-  const mrpt::poses::CPose2D offset(lookup(p, key + "offset").value_or(0),
-                                    lookup(p, key + "side_offset").value_or(0),
-                                    lookup(p, key + "angular_offset").value_or(0));
-  if (sensor == "front") return offset;
-  return mrpt::poses::CPose2D(0, 0, M_PI) + offset;
-}
-
 /** FLASER/RLASER: aperture from PARAM laser_<sensor>_laser_fov, else 180 degrees;
  * a resolution PARAM that does not fit the beam count is reported. */
 double flaserAperture(const CarmenLaser& laser, const std::string& sensor,
@@ -55,6 +42,17 @@ double flaserAperture(const CarmenLaser& laser, const std::string& sensor,
 }
 
 }  // namespace
+
+mrpt::poses::CPose2D carmenOffsetPose(const std::string& sensor, const CarmenLogParams& p)
+{
+  const std::string key = sensor == "front" ? "robot_frontlaser_" : "robot_rearlaser_";
+  if (sensor != "front" && sensor != "rear") return {};
+  const mrpt::poses::CPose2D offset(lookup(p, key + "offset").value_or(0),
+                                    lookup(p, key + "side_offset").value_or(0),
+                                    lookup(p, key + "angular_offset").value_or(0));
+  if (sensor == "front") return offset;
+  return mrpt::poses::CPose2D(0, 0, M_PI) + offset;
+}
 
 bool carmenParamIsUsed(const std::string& name)
 {
@@ -83,15 +81,13 @@ CarmenScanGeometry carmenScanGeometry(const CarmenLaser& laser, const CarmenLogP
     g.aperture = laser.resolution > 0 && n > 1 ? (n - 1) * laser.resolution : laser.fov;
     const double centre = laser.start_angle + g.aperture / 2;
     const mrpt::poses::CPose2D mount =
-        laser.has_laser_pose ? mrpt::poses::CPose2D(laser.laser_pose) -
-                                   mrpt::poses::CPose2D(laser.robot_pose)
-                             : offsetPose(sensor, log_params);
+        laser.has_laser_pose ? carmenLaserMounting(laser) : carmenOffsetPose(sensor, log_params);
     g.sensor_pose = mount + mrpt::poses::CPose2D(0, 0, centre);
   }
   else
   {
     g.aperture = flaserAperture(laser, sensor, log_params, g.warning);
-    g.sensor_pose = offsetPose(sensor, log_params);
+    g.sensor_pose = carmenOffsetPose(sensor, log_params);
   }
 
   const auto param_max = lookup(log_params, "robot_" + sensor + "_laser_max");

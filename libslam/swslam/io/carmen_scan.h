@@ -35,6 +35,11 @@ CarmenScanGeometry carmenScanGeometry(const CarmenLaser& laser, const CarmenLogP
                                       const CarmenParams& params,
                                       std::optional<double> saturation, double largest);
 
+/** Sensor pose on the robot from PARAM offsets (CARMEN convention: the front laser looks
+ * forward `offset` metres ahead of the centre, the rear laser backwards, `offset` behind);
+ * identity for another sensor. */
+mrpt::poses::CPose2D carmenOffsetPose(const std::string& sensor, const CarmenLogParams& log_params);
+
 /** True for the PARAM names that carmenScanGeometry() reads (offsets, FOV, resolution,
  * max range of the front and rear lasers); their values must be numbers. */
 bool carmenParamIsUsed(const std::string& name);

@@ -163,6 +163,14 @@ void HokuyoLink::trouble(const std::string& why)
   stats_.connected = false;
 }
 
+std::string HokuyoLink::address() const { return ip_.empty() ? serial_ : ip_ + ":" + std::to_string(port_); }
+
+std::string HokuyoLink::retryPolicy() const
+{
+  return "reconnecting after " + std::to_string(options_.min_backoff.count()) + " ms, doubling up to " +
+         std::to_string(options_.max_backoff.count()) + " ms, for as long as the run lasts";
+}
+
 void HokuyoLink::retryLater(const std::string& why)
 {
   trouble(why);
@@ -181,6 +189,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
       return nullptr;
     }
     std::string why;
+    stats_.attempts++;
     if (!reachable(why))
     {
       retryLater(why + " (retrying, up to every " + std::to_string(options_.max_backoff.count()) + " ms)");

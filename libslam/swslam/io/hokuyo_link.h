@@ -53,6 +53,7 @@ struct HokuyoLinkOptions
 struct HokuyoLinkStats
 {
   size_t scans = 0, connects = 0, errors = 0, stalls = 0;
+  size_t attempts = 0;  ///< connections tried (each reachability check or initialization)
   size_t driver_messages = 0;  ///< error messages the driver logged
   uint64_t garbage_bytes = 0;  ///< bytes of data that was not SCIP 2.0 (see GarbageMeter)
   bool connected = false;  ///< a scan arrived since the last (re)connection
@@ -76,6 +77,11 @@ class HokuyoLink
   mrpt::obs::CObservation2DRangeScan::Ptr poll();
 
   const HokuyoLinkStats& stats() const { return stats_; }
+  /** Where the sensor is: "IP:PORT" (Ethernet) or the serial port. */
+  std::string address() const;
+  /** How the link retries: "reconnecting after 250 ms, doubling up to 4000 ms, for as long as
+   * the run lasts". */
+  std::string retryPolicy() const;
 
  private:
   bool reachable(std::string& why) const;

@@ -2,6 +2,7 @@
 
 #include <swslam/io/gzip_file.h>
 #include <swslam/io/read_progress.h>
+#include <swslam/sensor/input_bounds.h>
 
 #include <algorithm>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <mrpt/core/exceptions.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -46,8 +48,6 @@ constexpr size_t kScanClassLen = sizeof(kScanClass) - 1, kPoseClassLen = sizeof(
 // 12 doubles), end marker; then the ray count.
 constexpr size_t kPoseAt = 1 + kScanClassLen + 1 + 4 + 1 + 4;
 constexpr size_t kRayCountAt = kPoseAt + 1 + kPoseClassLen + 1 + 12 * 8 + 1;
-/** Far above any 2D scanner (the largest have tens of thousands of rays). */
-constexpr uint32_t kMaxScanRays = 1u << 20;
 
 /** The ray count of the scan entry that `head` starts, if it is one of the known layout. */
 std::optional<uint32_t> scanRayCount(const std::string& head)
@@ -122,9 +122,9 @@ void decodeRawlog(const std::string& path, DecodeChannel& channel)
     const std::string& head = archive.peek(kRayCountAt + 4);
     channel.mark({entry, file.position() - head.size()});
     if (head.empty()) return;  // the clean end of the file
-    if (const auto rays = scanRayCount(head); rays && *rays > kMaxScanRays)
-      throw std::runtime_error("a scan of " + std::to_string(*rays) + " rays (more than " +
-                               std::to_string(kMaxScanRays) + ": a corrupt count)");
+    if (const auto rays = scanRayCount(head))
+      if (const std::string problem = sensor::rayCountProblem(*rays); !problem.empty())
+        throw std::runtime_error(problem);
     mrpt::serialization::CSerializable::Ptr obj;
     try
     {
@@ -175,6 +175,7 @@ bool RawlogReader::next(RawlogItem& item)
                            " (at byte " + std::to_string(at.offset) + "): " + why,
                        at.index);
   };
+  if (refused_) throw *refused_;
   try
   {
     if (!decoder_->next(frame_))
@@ -206,6 +207,22 @@ bool RawlogReader::next(RawlogItem& item)
   item.odometry_increment = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(obj);
   if (!item.observation && !item.odometry_increment)
     throw corrupt(frame_.at, "its decoded item is neither an observation nor an odometry increment");
+  // Read whole, but past the bounds every reader applies (a scan inside a sensory frame had
+  // its ray count checked only by the decoder's memory budget).
+  if (const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.observation))
+  {
+    std::string problem = sensor::rayCountProblem(scan->getScanSize());
+    if (problem.empty()) problem = sensor::mountingProblem(scan->sensorPose);
+    if (!problem.empty())
+    {
+      entries_ = frame_.at.index;
+      refused_ = std::make_shared<RawlogError>("rawlog '" + path_ + "': entry #" + std::to_string(frame_.at.index) +
+                                                   " (at byte " + std::to_string(frame_.at.offset) + "): scan '" +
+                                                   scan->sensorLabel + "': " + problem,
+                                               frame_.at.index);
+      throw *refused_;
+    }
+  }
   return true;
 }
 

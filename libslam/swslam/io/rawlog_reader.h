@@ -52,7 +52,8 @@ class RawlogReader
    * Throws RawlogError (with the entry index and byte offset in its message) on corrupt or
    * truncated data, on a scan entry whose ray count is above 2^20 (checked before MRPT
    * allocates for it), on an entry that crashes MRPT's decoder or needs more than the
-   * decoder's memory budget; and again on every call after that. */
+   * decoder's memory budget, on a scan past the bounds of sensor/input_bounds.h (its rays, its
+   * sensor's mounting); and again on every call after that. */
   bool next(RawlogItem& item);
 
   /** Number of top-level rawlog entries read so far. */
@@ -67,6 +68,7 @@ class RawlogReader
   DecodedFrame frame_;  ///< the last frame read (its buffer is reused)
   size_t entries_ = 0;
   double fraction_ = 0;
+  std::shared_ptr<RawlogError> refused_;  ///< a scan past the input bounds: the reading ends there
 };
 
 }  // namespace swslam::io

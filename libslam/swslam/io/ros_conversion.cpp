@@ -1,10 +1,13 @@
 #include <swslam/io/ros_conversion.h>
 
+#include <swslam/sensor/input_bounds.h>
+
 #include <mrpt/ros1bridge/pose.h>
 #include <mrpt/ros1bridge/time.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <stdexcept>
@@ -16,15 +19,42 @@ using mrpt::obs::CObservationOdometry;
 using mrpt::poses::CPose2D;
 using mrpt::poses::CPose3D;
 
+std::string laserScanAnglesProblem(double angle_min, double angle_max, double angle_increment, size_t rays)
+{
+  char buf[400];
+  if (!std::isfinite(angle_increment) || angle_increment == 0 || !std::isfinite(angle_min) ||
+      !std::isfinite(angle_max))
+  {
+    std::snprintf(buf, sizeof(buf), "a LaserScan with angle_min %g, angle_max %g and angle_increment %g rad",
+                  angle_min, angle_max, angle_increment);
+    return buf;
+  }
+  // Ray i is at angle_min + i angle_increment, the last at angle_max; some drivers state
+  // angle_max one increment past the last ray (a full turn's 2 pi).
+  const double last = angle_min + angle_increment * static_cast<double>(rays - 1);
+  const double off = std::min(std::abs(last - angle_max), std::abs(last + angle_increment - angle_max));
+  if (off <= kAngleTolerance * std::abs(angle_increment)) return "";
+  std::snprintf(buf, sizeof(buf),
+                "a LaserScan whose angles disagree: angle_min %.6g + %zu x angle_increment %.6g = %.6g rad, but "
+                "angle_max is %.6g rad (%s): its rays' order is not the one its angles state",
+                angle_min, rays - 1, angle_increment, last, angle_max,
+                (angle_increment < 0) == (angle_max < angle_min)
+                    ? "off by more than half an increment"
+                    : (angle_increment < 0 ? "a negative increment from angle_min up to a larger angle_max"
+                                           : "a positive increment from angle_min down to a smaller angle_max"));
+  return buf;
+}
+
 CObservation2DRangeScan scanFromRos(const sensor_msgs::LaserScan& msg, const std::string& label,
                                     const CPose3D& sensor_pose)
 {
   const size_t n = msg.ranges.size();
   if (n < 2) throw std::invalid_argument("a LaserScan of " + std::to_string(n) + " rays (at least 2 needed)");
+  if (const std::string problem = sensor::rayCountProblem(n); !problem.empty()) throw std::invalid_argument(problem);
+  if (const std::string problem = laserScanAnglesProblem(msg.angle_min, msg.angle_max, msg.angle_increment, n);
+      !problem.empty())
+    throw std::invalid_argument(problem);
   const double step = msg.angle_increment;
-  if (!std::isfinite(step) || step == 0 || !std::isfinite(msg.angle_min))
-    throw std::invalid_argument("a LaserScan with angle_increment " + std::to_string(step) + " and angle_min " +
-                                std::to_string(msg.angle_min));
   CObservation2DRangeScan scan;
   scan.timestamp = mrpt::ros1bridge::fromROS(msg.header.stamp);
   scan.sensorLabel = label;
@@ -159,11 +189,15 @@ class LayoutCursor
     at_ += 4;
     return true;
   }
-  /** A length-prefixed array of `element` bytes per item (strings: 1). */
+  /** A length-prefixed array of `element` bytes per item (strings: 1); its length in `n`. */
+  bool array(uint64_t element, uint32_t& n)
+  {
+    return u32(n) && skip(element * n);
+  }
   bool array(uint64_t element)
   {
     uint32_t n = 0;
-    return u32(n) && skip(element * n);
+    return array(element, n);
   }
   bool header() { return skip(4 + 8) && array(1); }  // seq, stamp, frame_id
   bool atEnd() const { return at_ == bytes_.size(); }
@@ -184,9 +218,10 @@ std::string ended(const LayoutCursor& c, size_t size)
 std::string laserScanLayoutProblem(const std::vector<uint8_t>& bytes)
 {
   LayoutCursor c(bytes);
-  if (!c.header() || !c.skip(7 * 4) || !c.array(4) || !c.array(4)) return ended(c, bytes.size());
+  uint32_t rays = 0, intensities = 0;
+  if (!c.header() || !c.skip(7 * 4) || !c.array(4, rays) || !c.array(4, intensities)) return ended(c, bytes.size());
   if (!c.atEnd()) return std::to_string(bytes.size() - c.offset()) + " bytes past the scan's end";
-  return "";
+  return sensor::rayCountProblem(std::max(rays, intensities));
 }
 
 std::string tfMessageLayoutProblem(const std::vector<uint8_t>& bytes)

@@ -19,13 +19,25 @@
 
 namespace swslam::io
 {
+/** A LaserScan's angles agree when its last ray, at angle_min + (rays - 1) angle_increment,
+ * is at angle_max within this fraction of an increment (or one increment before it: some
+ * drivers state the end of a full turn). */
+constexpr double kAngleTolerance = 0.5;
+
+/** Why a LaserScan's angles are not those of `rays` rays ("" if they are): an angle not finite,
+ * a zero increment, or angle_min + (rays - 1) angle_increment not at angle_max (within
+ * kAngleTolerance increments, or one increment before it). A negative increment from a larger
+ * angle_min down to angle_max is a scan published right to left, and agrees. */
+std::string laserScanAnglesProblem(double angle_min, double angle_max, double angle_increment, size_t rays);
+
 /** The scan of `msg`, labelled `label`, from a sensor at `sensor_pose` on the vehicle. Ray i
  * of a ROS scan points at angle_min + i * angle_increment: the MRPT scan (symmetric about its
- * own x axis) gets the same rays in counter-clockwise order, its x axis turned to the middle of
- * the fan (folded into sensorPose). A ray is valid if finite and within [range_min,
- * range_max] (REP 117: NaN and +-inf are no measurement); an invalid ray that is not finite
- * reads range_max. Throws std::invalid_argument if the scan has fewer than 2 rays or a zero or
- * non-finite angle increment. */
+ * own x axis) gets the same rays in counter-clockwise order (a scan published right to left,
+ * with a negative increment, reversed), its x axis turned to the middle of the fan (folded
+ * into sensorPose). A ray is valid if finite and within [range_min, range_max] (REP 117: NaN
+ * and +-inf are no measurement); an invalid ray that is not finite reads range_max. Throws
+ * std::invalid_argument naming the problem if the scan has fewer than 2 rays or more than
+ * sensor::kMaxScanRays, or its angles disagree (laserScanAnglesProblem). */
 mrpt::obs::CObservation2DRangeScan scanFromRos(const sensor_msgs::LaserScan& msg, const std::string& label,
                                                const mrpt::poses::CPose3D& sensor_pose);
 
@@ -54,7 +66,8 @@ bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transfor
 
 /** Why the serialized `bytes` are not a well-formed message of that type ("" if they are): the
  * lengths its arrays state must fit in the bytes, checked before ROS's deserializer sizes a
- * vector by them (it allocates first: a corrupt length would ask for gigabytes). */
+ * vector by them (it allocates first: a corrupt length would ask for gigabytes); a scan has at
+ * most sensor::kMaxScanRays rays, as in every format. */
 std::string laserScanLayoutProblem(const std::vector<uint8_t>& bytes);
 std::string tfMessageLayoutProblem(const std::vector<uint8_t>& bytes);
 

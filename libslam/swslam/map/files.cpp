@@ -1,9 +1,9 @@
 #include <swslam/map/files.h>
 
 #include <swslam/common/atomic_file.h>
+#include <swslam/common/gzip_output.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <charconv>
@@ -28,12 +28,7 @@ std::string shortest(float v)
 
 void writeGridmap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
 {
-  common::writeAtomically(path, [&](const std::string& tmp) {
-    mrpt::io::CFileGZOutputStream out;
-    if (!out.open(tmp)) throw std::runtime_error("cannot create '" + tmp + "'");
-    mrpt::serialization::archiveFrom(out) << grid;
-    out.close();
-  });
+  common::writeGzipAtomically(path, 1, [&](mrpt::io::CStream& out) { mrpt::serialization::archiveFrom(out) << grid; });
 }
 
 mrpt::maps::COccupancyGridMap2D readGridmap(const std::string& path)

@@ -1,6 +1,6 @@
 #include <swslam/map/map_picture.h>
 
-#include <swslam/common/atomic_file.h>
+#include <swslam/common/image_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -91,9 +91,7 @@ mrpt::img::CImage drawMapPicture(const mrpt::maps::COccupancyGridMap2D& grid, co
 void writeMapPicture(const mrpt::maps::COccupancyGridMap2D& grid, const Overlay& overlay, const std::string& path)
 {
   const mrpt::img::CImage img = drawMapPicture(grid, overlay);
-  common::writeAtomically(path, [&](const std::string& tmp) {
-    if (!img.saveToFile(tmp)) throw std::runtime_error("cannot save image '" + tmp + "'");
-  });
+  common::writeImageAtomically(path, img);
 }
 
 }  // namespace swslam::map

@@ -48,8 +48,8 @@ OctomapCounts writeOctomap(const mrpt::maps::COccupancyGridMap2D& grid, const st
         (p > occupied_thresh ? n.occupied : n.free)++;
       }
     }
-  common::writeAtomically(path, [&](const std::string& tmp) {
-    if (!tree.writeBinary(tmp)) throw std::runtime_error("OctoMap could not write '" + tmp + "'");
+  common::writeStreamAtomically(path, [&](std::ostream& out) {
+    if (!tree.writeBinary(out)) throw std::runtime_error("OctoMap could not write the tree");
   });
   return n;
 }

@@ -1,6 +1,6 @@
 #include <swslam/map/render.h>
 
-#include <swslam/common/atomic_file.h>
+#include <swslam/common/image_file.h>
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/opengl/CFBORender.h>
@@ -217,9 +217,7 @@ void renderMap(const mrpt::maps::COccupancyGridMap2D& grid, const Overlay& overl
                unsigned width, unsigned height)
 {
   const mrpt::img::CImage img = renderMapImage(grid, overlay, width, height);
-  common::writeAtomically(path, [&](const std::string& tmp) {
-    if (!img.saveToFile(tmp)) throw std::runtime_error("cannot save image '" + tmp + "'");
-  });
+  common::writeImageAtomically(path, img);
 }
 
 }  // namespace swslam::map

@@ -1,7 +1,8 @@
 #include <swslam/sensor/scan.h>
 
+#include <swslam/sensor/input_bounds.h>
+
 #include <mrpt/core/bits_math.h>
-#include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/obs/CSinCosLookUpTableFor2DScans.h>
 
 #include <cmath>
@@ -26,12 +27,9 @@ void checkObservationGeometry(const mrpt::obs::CObservation2DRangeScan& obs)
   if (!(obs.maxRange > 0) || !std::isfinite(obs.maxRange))
     throw std::invalid_argument(who + "max range " + std::to_string(obs.maxRange) +
                                 " is not a positive finite number");
-  // Every entry of the 4x4 matrix: a NaN in the rotation would make every point NaN.
-  const auto m = obs.sensorPose.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>();
-  for (int r = 0; r < 3; r++)
-    for (int c = 0; c < 4; c++)
-      if (!std::isfinite(m(r, c)))
-        throw std::invalid_argument(who + "sensor pose " + obs.sensorPose.asString() + " is not finite");
+  if (const std::string problem = rayCountProblem(n); !problem.empty()) throw std::invalid_argument(who + problem);
+  if (const std::string problem = mountingProblem(obs.sensorPose); !problem.empty())
+    throw std::invalid_argument(who + problem);
 }
 
 Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double min_range)

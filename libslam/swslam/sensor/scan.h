@@ -49,7 +49,8 @@ struct Scan
 /** Builds a Scan from an MRPT observation, keeping only valid rays (validity flag set,
  * finite, min_range <= r < max_range). Throws std::invalid_argument naming the problem
  * when the observation's geometry is inconsistent (fewer than 2 beams, aperture not in
- * (0, 2*pi], max range not positive and finite, sensor pose not finite). A scan with no valid ray is returned empty. */
+ * (0, 2*pi], max range not positive and finite, more rays or a sensor pose not finite or
+ * farther out than input_bounds.h allows). A scan with no valid ray is returned empty. */
 Scan scanFromObservation(const mrpt::obs::CObservation2DRangeScan& obs, double min_range = 0.0);
 
 /** The geometry checks of scanFromObservation alone (cheap: no ray is converted). */

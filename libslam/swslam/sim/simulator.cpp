@@ -1,7 +1,7 @@
 #include <swslam/sim/simulator.h>
 #include <swslam/sim/scenario_check.h>
 
-#include <swslam/common/atomic_file.h>
+#include <swslam/common/gzip_output.h>
 #include <swslam/common/tum_io.h>
 #include <swslam/sim/grid.h>
 #include <swslam/sim/sensor.h>
@@ -10,7 +10,6 @@
 #include <swslam/sim/writer.h>
 
 #include <mrpt/core/format.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -71,9 +70,7 @@ SimulationSummary runSimulation(const Scenario& sc, const std::string& output_di
 
   const auto t0 = std::chrono::steady_clock::now();
   const std::string rawlog = base.string() + ".rawlog";
-  common::writeAtomically(rawlog, [&](const std::string& tmp) {
-    mrpt::io::CFileGZOutputStream file;
-    if (!file.open(tmp)) throw std::runtime_error("cannot create '" + tmp + "'");
+  common::writeGzipAtomically(rawlog, 1, [&](mrpt::io::CStream& file) {
     auto out = mrpt::serialization::archiveFrom(file);
     for (size_t k = 0; k < scans; k++)
     {

@@ -1,6 +1,7 @@
 #include <swslam/sim/writer.h>
 
 #include <swslam/common/atomic_file.h>
+#include <swslam/common/image_file.h>
 
 #include <mrpt/core/format.h>
 
@@ -102,9 +103,7 @@ void writeWorldPicture(const std::string& png_path, const World& world,
                        const std::vector<Eigen::Vector2d>& path)
 {
   const mrpt::img::CImage img = drawWorld(world, path);
-  common::writeAtomically(png_path, [&](const std::string& tmp) {
-    if (!img.saveToFile(tmp)) throw std::runtime_error("cannot save PNG '" + tmp + "'");
-  });
+  common::writeImageAtomically(png_path, img);
 }
 
 }  // namespace swslam::sim
