@@ -29,7 +29,9 @@ FeedResult InputGate::admit(sensor::ScanInput& input)
     return {FeedStatus::TimestampOutOfRange, buf + common::timeUnitHint(t)};
   }
   FeedResult result;
-  const bool jitter = options_.timestamp_step_back > 0 && std::isfinite(t) && last_timestamp_ >= 0 &&
+  // A jitter is one scan out of step after one that went forward: a clock that does not run
+  // (every stamp equal, or microseconds that MRPT's clock turned to 0) is no jitter.
+  const bool jitter = options_.timestamp_step_back > 0 && last_went_forward_ && std::isfinite(t) &&
                       t <= last_timestamp_ && last_timestamp_ - t <= options_.timestamp_step_back;
   if (jitter)
   {
@@ -69,8 +71,10 @@ FeedResult InputGate::admit(sensor::ScanInput& input)
   }
   // An odometry increment is checked where it enters: a value no vehicle reaches would become
   // the tracker's guess, the search's window and a map pose.
+  const bool first = last_timestamp_ < 0;
   const double since_last = t - last_timestamp_;
   if (!jitter) last_timestamp_ = t;  // after a resumption, the log's clock goes on from here
+  last_went_forward_ = !jitter && !first && since_last > 0;
   if (input.odometry_increment && !isFinite(*input.odometry_increment))
   {
     result = {FeedStatus::OdometryDropped,

@@ -2,7 +2,8 @@
 // Where a scan enters the system (SlamSystem::feed): the checks it must pass, on the caller's
 // thread, before any module sees it. A timestamp outside 1970-2200 or one further before the
 // latest taken than a logger's jitter, and inconsistent geometry, skip the scan and say why; a
-// stamp that repeats or steps back a little is taken under its own stamp and said; a log
+// stamp that repeats or steps back a little, right after one that went forward, is taken under
+// its own stamp and said; a log
 // whose stamp jumped forward resumes once enough scans behind it come in order; an odometry
 // increment that is not finite, or longer than the vehicle can go, is dropped (the scan is
 // tracked without it) and said.
@@ -55,6 +56,7 @@ class InputGate
  private:
   SystemOptions options_;
   double last_timestamp_ = -1;  ///< the latest stamp taken
+  bool last_went_forward_ = false;  ///< the last scan taken had a stamp after the one before it
   size_t behind_in_order_ = 0;  ///< skipped scans in a row behind last_timestamp_, in order
   double last_behind_ = 0;      ///< the last of them's timestamp
 };

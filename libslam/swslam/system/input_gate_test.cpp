@@ -1,6 +1,6 @@
-// Where a scan enters: stamps that repeat or step back within timestamp_step_back are taken
-// under their own stamp and said, further back they are skipped, and the latest stamp taken is
-// what the next is judged against.
+// Where a scan enters: a stamp that repeats or steps back within timestamp_step_back right
+// after one that went forward is taken under its own stamp and said; further back, or a clock
+// that does not run, is skipped; the latest stamp taken is what the next is judged against.
 #include <swslam/system/input_gate.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -39,15 +39,28 @@ TEST(InputGate, StampsThatRepeatOrStepBackALittleAreTakenFurtherBackSkipped)
   EXPECT_EQ(admitAt(gate, 100.0), FeedStatus::Accepted);
   EXPECT_EQ(admitAt(gate, 100.2), FeedStatus::Accepted);
   EXPECT_EQ(admitAt(gate, 100.2), FeedStatus::TimestampStepBack);  // repeated
-  EXPECT_EQ(admitAt(gate, 99.9), FeedStatus::TimestampStepBack);   // 0.3 s back
-  // Judged against the latest taken (100.2), not the one before: 99.3 is 0.9 s back, 99.1 1.1 s.
-  EXPECT_EQ(admitAt(gate, 99.3), FeedStatus::TimestampStepBack);
-  EXPECT_EQ(admitAt(gate, 99.1), FeedStatus::TimestampNotIncreasing);
   EXPECT_EQ(admitAt(gate, 100.3), FeedStatus::Accepted);
-  sensor::ScanInput in = scanAt(100.3);
+  EXPECT_EQ(admitAt(gate, 99.4), FeedStatus::TimestampStepBack);   // 0.9 s back
+  EXPECT_EQ(admitAt(gate, 100.4), FeedStatus::Accepted);
+  EXPECT_EQ(admitAt(gate, 99.3), FeedStatus::TimestampNotIncreasing);  // 1.1 s back
+  EXPECT_EQ(admitAt(gate, 100.5), FeedStatus::Accepted);
+  sensor::ScanInput in = scanAt(100.5);
   const FeedResult r = gate.admit(in);
   EXPECT_TRUE(r.ok());
   EXPECT_NE(r.message.find("equal to the latest taken"), std::string::npos) << r.message;
+}
+
+TEST(InputGate, AClockThatDoesNotRunIsNoJitter)
+{
+  // Only a scan right after one that went forward may step back: every stamp equal (or two
+  // out of step in a row) is skipped from the second on.
+  SystemOptions options;
+  InputGate gate(options);
+  EXPECT_EQ(admitAt(gate, 100.0), FeedStatus::Accepted);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(admitAt(gate, 100.0), FeedStatus::TimestampNotIncreasing) << k;
+  EXPECT_EQ(admitAt(gate, 100.1), FeedStatus::Accepted);
+  EXPECT_EQ(admitAt(gate, 100.05), FeedStatus::TimestampStepBack);
+  EXPECT_EQ(admitAt(gate, 100.05), FeedStatus::TimestampNotIncreasing);
 }
 
 TEST(InputGate, WithoutAStepBackOnlyIncreasingStampsAreTaken)
