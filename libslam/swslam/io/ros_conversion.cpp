@@ -169,6 +169,27 @@ bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transfor
   return false;
 }
 
+SensorMounting mountingFromTf(const std::string& scan_frame, const std::string& odom_child,
+                              const std::vector<geometry_msgs::TransformStamped>& transforms,
+                              const std::string& tf_problem, const std::string& path)
+{
+  const std::string base_frame = odom_child.empty() ? "base_link" : odom_child;
+  SensorMounting m;
+  if (scan_frame.empty() || scan_frame == base_frame)
+    m.source = "identity (the scans are in frame '" + base_frame + "')";
+  else if (!tf_problem.empty())
+    m.source = "identity (a /tf_static message cannot be read: " + tf_problem + ")";
+  else if (poseInAncestor(transforms, scan_frame, base_frame, m.pose))
+  {
+    m.source = "/tf_static '" + base_frame + "' -> '" + scan_frame + "'";
+    if (const std::string problem = sensor::mountingProblem(m.pose); !problem.empty())
+      throw std::runtime_error("bag '" + path + "': " + m.source + ": " + problem);
+  }
+  else
+    m.source = "identity (no /tf_static transform from '" + base_frame + "' to '" + scan_frame + "')";
+  return m;
+}
+
 namespace
 {
 /** Walks serialized ROS message bytes, checking each length against what is left. */

@@ -5,6 +5,8 @@
 // (a 5-ray scan r0..r4 comes back as r0 r0 r1 r2 r3), and it keeps no ray past 99% of
 // range_max. Here every ray keeps its index and angle.
 
+#include <swslam/io/bag_reader.h>
+
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3D.h>
@@ -63,6 +65,17 @@ mrpt::poses::CPose3D transformFromRos(const geometry_msgs::Transform& t);
  * `transforms` (a tf tree); false if `ancestor` is not above `child` in it. */
 bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transforms, const std::string& child,
                     const std::string& ancestor, mrpt::poses::CPose3D& pose);
+
+/** The scanner's pose for a bag (ROS 1 or 2) at `path`: the pose of the scans' frame
+ * `scan_frame` in the vehicle's frame (the odometry's child frame `odom_child`, else
+ * base_link) composed from the /tf_static `transforms`; identity, its source saying why, if
+ * the scans are in the vehicle's frame, if `tf_problem` (a /tf_static message that could not
+ * be read) is not empty, or if no transforms link the frames. Throws std::runtime_error
+ * "bag 'P': /tf_static 'base' -> 'scan': ..." if the pose is no mounting
+ * (sensor::mountingProblem). */
+SensorMounting mountingFromTf(const std::string& scan_frame, const std::string& odom_child,
+                              const std::vector<geometry_msgs::TransformStamped>& transforms,
+                              const std::string& tf_problem, const std::string& path);
 
 /** Why the serialized `bytes` are not a well-formed message of that type ("" if they are): the
  * lengths its arrays state must fit in the bytes, checked before ROS's deserializer sizes a
