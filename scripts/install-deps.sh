@@ -16,6 +16,7 @@ packages=(
   libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
   mrpt-common
   librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libmrpt-ros1bridge-dev
+  libsqlite3-dev libzstd-dev liblz4-dev libyaml-cpp-dev sqlite3
   libegl1 libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
 )

@@ -1,0 +1,57 @@
+#pragma once
+// The messages of a ROS 2 bag, whatever holds them: a rosbag2 folder (metadata.yaml naming
+// its .db3 or .mcap files, read in its order), a single .mcap file or a single .db3 file.
+// .db3 files are read through SQLite (rosbag2's tables `topics` and `messages`, in timestamp
+// order), .mcap files through mcap_reader.h (in file order, as rosbag2 records them).
+// Messages compressed one by one with zstd (metadata.yaml's compression_mode MESSAGE) are
+// decompressed, each bounded by kMaxRos2MessageBytes.
+
+#include <swslam/io/bag_reader.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace swslam::io
+{
+/** [bytes] The largest message read, once decompressed (64 MiB: a scan of 2^20 rays with
+ * intensities takes 8 MiB); as for ROS 1 bags. */
+constexpr uint64_t kMaxRos2MessageBytes = uint64_t(64) << 20;
+
+struct Ros2Message
+{
+  std::string topic;
+  uint64_t time_ns = 0;  ///< the bag's time (when it was recorded)
+  std::vector<uint8_t> data;  ///< CDR
+};
+
+class Ros2Storage
+{
+ public:
+  virtual ~Ros2Storage() = default;
+  /** Its topics (name, type e.g. sensor_msgs/msg/LaserScan, messages), by name. */
+  const std::vector<BagTopic>& topics() const { return topics_; }
+  /** Starts reading the messages of `topics` from the first. */
+  virtual void select(const std::vector<std::string>& topics) = 0;
+  /** The next message of the selected topics; false at the end. Throws std::runtime_error
+   * naming the damage (the messages before it stay valid). */
+  virtual bool next(Ros2Message& out) = 0;
+  /** What the topic list could not read (a damaged file: its counts stop there); "" if none. */
+  const std::string& countingProblem() const { return counting_problem_; }
+
+ protected:
+  std::vector<BagTopic> topics_;
+  std::string counting_problem_;
+};
+
+/** Opens `path`: a rosbag2 folder, a .mcap or a .db3 file. Throws std::runtime_error naming
+ * the problem (no metadata.yaml, a storage other than sqlite3 and mcap, files compressed whole,
+ * a file that is missing or not of its format). */
+std::unique_ptr<Ros2Storage> openRos2Storage(const std::string& path);
+
+/** Whether `path` is a ROS 2 bag: a folder holding metadata.yaml, a file whose name ends in
+ * .mcap or .db3, or one starting with the MCAP magic. */
+bool isRos2Bag(const std::string& path);
+
+}  // namespace swslam::io
