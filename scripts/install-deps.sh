@@ -20,6 +20,10 @@ packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
 )
+# The ROS 2 test bags are written by npm packages (tests/ros2/make-bags.sh): Debian's Node.js and
+# npm, unless a Node.js with its npm is installed already (NodeSource's nodejs package holds npm
+# and conflicts with Debian's).
+command -v npm > /dev/null || packages+=(nodejs npm)
 for arg in "$@"; do
   case $arg in
     --with-bench) packages+=(libceres-dev) ;;
