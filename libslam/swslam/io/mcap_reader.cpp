@@ -98,7 +98,7 @@ std::string decompress(const std::string& compression, const uint8_t* src, uint6
   if (compression.empty())
   {
     if (n != dst.size()) return std::to_string(n) + " bytes stored uncompressed";
-    std::memcpy(dst.data(), src, n);
+    if (n > 0) std::memcpy(dst.data(), src, n);  // an empty chunk has no buffer
     return "";
   }
   if (compression == "zstd")

@@ -231,6 +231,8 @@ TEST(Ros2BagReader, AScanSourceReadsAFolderOrAFileAsAROS2Bag)
   EXPECT_EQ(source->stats().odometry, size_t(kScans));
   EXPECT_TRUE(isRos2Bag(writeMcap("named", false)));
   EXPECT_FALSE(isRos2Bag(writeRos1Bag()));
+  Ros2BagReader file(dir + "/bag_0.db3", {});  // a .db3 file alone, without its metadata.yaml
+  EXPECT_EQ(observations(file).size(), 2u * kScans);
   EXPECT_FALSE(isRos2Bag(fs::temp_directory_path().string()));  // a folder without metadata.yaml
 }
 
@@ -260,6 +262,62 @@ TEST(Ros2BagReader, ADamagedMessageStopsTheReadingAfterTheGoodOnes)
   });
   EXPECT_EQ(good, 8u);
   EXPECT_EQ(e.rfind("bag '" + dir + "': message #8 of 24 cannot be read (/scan at 1000400000000 ns): CDR byte ", 0), 0u)
+      << e;
+}
+
+TEST(Ros2BagReader, ATransformOrOdometryWhoseQuaternionIsNoRotationIsNamed)
+{
+  // Found by the ros2_bag fuzz harness: MRPT threw a logic_error (with its call stack) from the
+  // constructor, past the documented errors. The ROS 1 reader shares the check.
+  McapOut f;
+  f.add(McapOut::header());
+  f.add(McapOut::schema(1, "tf2_msgs/msg/TFMessage")).add(McapOut::channel(1, 1, "/tf_static"));
+  f.add(McapOut::schema(2, "sensor_msgs/msg/LaserScan")).add(McapOut::channel(2, 2, "/scan"));
+  f.add(McapOut::schema(3, "nav_msgs/msg/Odometry")).add(McapOut::channel(3, 3, "/odom"));
+  tf2_msgs::TFMessage tf = tfStatic();
+  tf.transforms[0].transform.rotation.x = 1e300;
+  f.add(McapOut::message(1, 1, tfMessageCdr(tf)));
+  f.add(McapOut::message(2, 2, laserScanCdr(scanMessage(0))));
+  nav_msgs::Odometry odo = odomMessage(0);
+  f.add(McapOut::message(3, 2, odometryCdr(odo)));
+  odo.pose.pose.orientation.w = 2;
+  f.add(McapOut::message(3, 3, odometryCdr(odo)));
+  const std::string path = temp("quaternion.mcap");
+  f.write(path);
+  EXPECT_EQ(errorOf([&] { Ros2BagReader(path, {}); }),
+            "bag '" + path + "': /tf_static 'base_footprint' -> 'laser': a rotation quaternion (1e+300, 0, "
+            "0.0499792, 0.99875) of norm inf, not 1");
+
+  McapOut g;  // the same without /tf_static: the second odometry is named when read
+  g.add(McapOut::header());
+  g.add(McapOut::schema(2, "sensor_msgs/msg/LaserScan")).add(McapOut::channel(2, 2, "/scan"));
+  g.add(McapOut::schema(3, "nav_msgs/msg/Odometry")).add(McapOut::channel(3, 3, "/odom"));
+  g.add(McapOut::message(2, 2, laserScanCdr(scanMessage(0))));
+  g.add(McapOut::message(3, 2, odometryCdr(odomMessage(0))));
+  g.add(McapOut::message(3, 3, odometryCdr(odo)));
+  g.write(temp("odometry.mcap"));
+  Ros2BagReader r(temp("odometry.mcap"), {});
+  mrpt::obs::CObservation::Ptr o;
+  EXPECT_NE(errorOf([&] {
+              while (r.next(o)) {}
+            }).find("message #2 of 3 cannot be read (/odom at 3 ns): a rotation quaternion (0, 0, 0, 2) of norm 2, not 1"),
+            std::string::npos);
+}
+
+TEST(Ros2BagReader, AMessageCompressedByItselfStatingMoreThan64MiBIsNamed)
+{
+  const std::vector<uint8_t> bomb = zstdOf(std::vector<uint8_t>((64u << 20) + 1, 0));  // a few KiB
+  const std::string dir = writeDb3Folder("bomb", true, [&](size_t k, std::vector<uint8_t>& data) {
+    if (k == 9) data = bomb;
+  });
+  Ros2BagReader r(dir, {});
+  mrpt::obs::CObservation::Ptr o;
+  const std::string e = errorOf([&] {
+    while (r.next(o)) {}
+  });
+  EXPECT_NE(e.find("message #8 of 24 cannot be read: a zstd-compressed message of " +
+                   std::to_string(bomb.size()) + " bytes states 67108865 bytes (at most 67108864)"),
+            std::string::npos)
       << e;
 }
 

@@ -115,6 +115,7 @@ class McapStorage : public Ros2Storage
       }
     };
     McapMessage m;
+    std::string problem;  // a damaged file: counted up to it, reported when read
     for (file_ = 0; file_ < files_.size(); file_++)
     {
       reader_.reset();
@@ -124,14 +125,16 @@ class McapStorage : public Ros2Storage
         while (reader_->next(m)) by_name[reader_->channels().at(m.channel_id).topic].messages++;
         addChannels();
       }
-      catch (const std::runtime_error& e)  // a damaged file: counted up to it, reported when read
+      catch (const std::runtime_error& e)
       {
         if (!reader_) throw std::runtime_error(inFile(e.what()));  // not an MCAP file
         addChannels();
-        counting_problem_ = inFile(e.what());
+        problem = e.what();
         break;
       }
     }
+    if (by_name.empty() && !problem.empty())  // damaged before its first channel
+      throw std::runtime_error("cannot read '" + files_[file_] + "': " + problem);
     topics_ = sortedTopics(by_name);
     select({});
   }

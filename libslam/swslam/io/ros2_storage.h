@@ -37,12 +37,9 @@ class Ros2Storage
   /** The next message of the selected topics; false at the end. Throws std::runtime_error
    * naming the damage (the messages before it stay valid). */
   virtual bool next(Ros2Message& out) = 0;
-  /** What the topic list could not read (a damaged file: its counts stop there); "" if none. */
-  const std::string& countingProblem() const { return counting_problem_; }
 
  protected:
-  std::vector<BagTopic> topics_;
-  std::string counting_problem_;
+  std::vector<BagTopic> topics_;  ///< a damaged .mcap file's counts stop at the damage
 };
 
 /** Opens `path`: a rosbag2 folder, a .mcap or a .db3 file. Throws std::runtime_error naming

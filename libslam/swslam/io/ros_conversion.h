@@ -47,7 +47,9 @@ mrpt::obs::CObservation2DRangeScan scanFromRos(const sensor_msgs::LaserScan& msg
  * /tf_static): rays counter-clockwise from -aperture/2; invalid rays +inf (no return). */
 sensor_msgs::LaserScan scanToRos(const mrpt::obs::CObservation2DRangeScan& scan, const std::string& frame_id);
 
-/** The planar odometry of `msg` (its pose's x, y and yaw; the twist as local velocities). */
+/** The planar odometry of `msg` (its pose's x, y and yaw; the twist as local velocities).
+ * Throws std::invalid_argument naming it if its orientation is no rotation (a quaternion not
+ * finite or not of norm 1: MRPT's own check would throw a logic_error with a call stack). */
 mrpt::obs::CObservationOdometry odometryFromRos(const nav_msgs::Odometry& msg, const std::string& label);
 
 /** The odometry as a ROS message: pose of `child_frame` in `frame`. */
@@ -58,7 +60,8 @@ nav_msgs::Odometry odometryToRos(const mrpt::obs::CObservationOdometry& odo, con
 geometry_msgs::TransformStamped transformToRos(const mrpt::poses::CPose3D& pose, const std::string& parent,
                                                const std::string& child, const ros::Time& stamp);
 
-/** The pose of `child` in `parent` that a transform message states. */
+/** The pose of `child` in `parent` that a transform message states. Throws
+ * std::invalid_argument if its rotation is no rotation (as odometryFromRos). */
 mrpt::poses::CPose3D transformFromRos(const geometry_msgs::Transform& t);
 
 /** The pose of frame `child` in frame `ancestor`, composed along the parent links of
@@ -72,7 +75,7 @@ bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transfor
  * the scans are in the vehicle's frame, if `tf_problem` (a /tf_static message that could not
  * be read) is not empty, or if no transforms link the frames. Throws std::runtime_error
  * "bag 'P': /tf_static 'base' -> 'scan': ..." if the pose is no mounting
- * (sensor::mountingProblem). */
+ * (sensor::mountingProblem) or a transform's rotation is no rotation. */
 SensorMounting mountingFromTf(const std::string& scan_frame, const std::string& odom_child,
                               const std::vector<geometry_msgs::TransformStamped>& transforms,
                               const std::string& tf_problem, const std::string& path);
