@@ -212,4 +212,18 @@ await writeMcap(writeFolder(path.join(outDir, "lz4"), "mcap", "lz4_0.mcap", mess
 writeDb3(writeFolder(path.join(outDir, "db3"), "sqlite3", "db3_0.db3", messages), messages, false);
 writeDb3(writeFolder(path.join(outDir, "db3-zstd"), "sqlite3", "db3-zstd_0.db3", messages, "zstd"), messages, true);
 fs.writeFileSync(path.join(outDir, "scenario.json"), JSON.stringify(summary(messages), null, 1) + "\n");
+// The fuzz harnesses' seeds (tests/fuzz/ros2_bag_fuzz.cpp, cdr_messages_fuzz.cpp): the MCAP
+// files, and each message type in both byte orders behind its type byte.
+const seeds = path.join(outDir, "fuzz-seeds");
+fs.mkdirSync(path.join(seeds, "ros2_bag"), { recursive: true });
+fs.mkdirSync(path.join(seeds, "cdr_messages"), { recursive: true });
+for (const f of ["zstd.mcap", "be.mcap", "unchunked.mcap", "lz4/lz4_0.mcap"])
+  fs.copyFileSync(path.join(outDir, f), path.join(seeds, "ros2_bag", path.basename(f)));
+Object.keys(TYPES).forEach((topic, type) => {
+  const m = messages.find((x) => x.topic === topic);
+  if (!m) return;
+  for (const [name, kind] of [["le", EncapsulationKind.CDR_LE], ["be", EncapsulationKind.CDR_BE]])
+    fs.writeFileSync(path.join(seeds, "cdr_messages", `${topic.slice(1)}-${name}`),
+      Buffer.concat([Buffer.from([type]), cdr(topic, m.msg, kind)]));
+});
 console.log(`make-bags: ${messages.length} messages from ${source} -> ${outDir}`);
