@@ -2,7 +2,7 @@
 # ROS 2 bags end to end, written by independent writers (tests/ros2/make-bags.sh, the ctest
 # fixture ros2_bags): lake-short as a ROS 1 bag (swslam-rawlog2bag) and as ROS 2 bags of the
 # same messages (zstd, lz4, uncompressed and unchunked MCAP, big-endian CDR, .db3, .db3 with
-# zstd per message) give swslam the same trajectory, byte for byte in deterministic mode, and
+# zstd per message, .db3 compressed whole) give swslam the same trajectory, byte for byte in deterministic mode, and
 # say what they read; swslam-eval consistency reads one too. Damaged and foreign ROS 2 inputs
 # are named with their exit codes.
 set -uo pipefail
@@ -19,7 +19,7 @@ run() {  # run NAME INPUT [options...]: swslam's exit code
   "$bin/swslam" -c "$cfg" -i "$input" -o "$tmp/$name" -d -q --no-render "$@" > "$tmp/$name.log" 2>&1
 }
 run ros1 "$bags/lake-short.bag" || { echo "FAIL: swslam on the ROS 1 bag exited $?"; cat "$tmp/ros1.log"; exit 1; }
-for b in zstd.mcap be.mcap unchunked.mcap lz4 db3 db3-zstd; do
+for b in zstd.mcap be.mcap unchunked.mcap lz4 db3 db3-zstd db3-file-zstd; do
   run "$b" "$bags/lake-short/$b" || { echo "FAIL: swslam on $b exited $?"; cat "$tmp/$b.log"; fail=1; continue; }
   grep -qF "swslam on ROS 2 bag $bags/lake-short/$b (scans /scan, sensor pose /tf_static 'base_link' -> 'LIDAR', odometry /odom)" "$tmp/$b.log" ||
     { echo "FAIL: $b: the run does not say what it read"; grep "swslam on" "$tmp/$b.log"; fail=1; }
@@ -54,13 +54,13 @@ expect cut 2 "cannot be read: MCAP record at byte" $?
 grep -q "input stopped after" "$tmp/cut.log" || { echo "FAIL: cut: no 'input stopped after'"; fail=1; }
 [[ -s $tmp/cut/trajectory.tum ]] || { echo "FAIL: cut: no trajectory of the scans before the cut"; fail=1; }
 
-# Not an MCAP file, a folder whose files are compressed whole.
+# Not an MCAP file; a bag compressed file by file whose file is cut short.
 echo "hello" > "$tmp/text.mcap"
 run notmcap "$tmp/text.mcap"
 expect notmcap 1 "is not an MCAP file: it does not start with its magic" $?
-mkdir "$tmp/filezstd"
-printf 'rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n  compression_format: zstd\n  compression_mode: FILE\n  relative_file_paths: [x_0.db3.zstd]\n' > "$tmp/filezstd/metadata.yaml"
+cp -r "$bags/lake-short/db3-file-zstd" "$tmp/filezstd"
+truncate -s 100000 "$tmp/filezstd/db3-file-zstd_0.db3.zstd"
 run filezstd "$tmp/filezstd"
-expect filezstd 1 "its files are compressed whole (compression_mode FILE)" $?
+expect filezstd 1 "db3-file-zstd_0.db3.zstd': its zstd data is cut short (a truncated file)" $?
 
 exit $fail

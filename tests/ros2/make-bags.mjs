@@ -10,7 +10,8 @@
 // Writes into OUTDIR: zstd.mcap (zstd chunks), be.mcap (big-endian CDR, uncompressed chunks),
 // unchunked.mcap (no chunks), lz4/ (a rosbag2 folder of one .mcap with lz4 chunks), db3/ (a
 // rosbag2 folder of one .db3), db3-zstd/ (.db3, each message zstd-compressed, as rosbag2's
-// compression_mode MESSAGE does), scenario.json (counts, first and last values).
+// compression_mode MESSAGE does), db3-file-zstd/ (the .db3 compressed whole: FILE),
+// scenario.json (counts, first and last values), fuzz-seeds/.
 import { CdrWriter, EncapsulationKind } from "@foxglove/cdr";
 import { Bag } from "@foxglove/rosbag";
 import { FileReader } from "@foxglove/rosbag/node.js";
@@ -160,7 +161,7 @@ function writeDb3(file, messages, messageZstd) {
   if (r.status !== 0) throw new Error(`sqlite3 failed (${r.status}): ${r.stderr}`);
 }
 
-function writeFolder(dir, storage, fileName, messages, compression = "") {
+function writeFolder(dir, storage, fileName, messages, compression = "", mode = "MESSAGE") {
   fs.rmSync(dir, { recursive: true, force: true });
   fs.mkdirSync(dir, { recursive: true });
   const counts = Object.keys(TYPES).map((t) => [t, messages.filter((m) => m.topic === t).length]).filter(([, n]) => n > 0);
@@ -179,9 +180,9 @@ function writeFolder(dir, storage, fileName, messages, compression = "") {
       "    - topic_metadata:", `        name: ${t}`, `        type: ${TYPES[t]}`,
       "        serialization_format: cdr", "        offered_qos_profiles: \"\"", `      message_count: ${n}`]),
     `  compression_format: "${compression}"`,
-    `  compression_mode: "${compression ? "MESSAGE" : ""}"`,
+    `  compression_mode: "${compression ? mode : ""}"`,
     "  relative_file_paths:",
-    `    - ${fileName}`,
+    `    - ${fileName}${mode === "FILE" ? ".zstd" : ""}`,
     "",
   ].join("\n");
   fs.writeFileSync(path.join(dir, "metadata.yaml"), yaml);
@@ -211,6 +212,10 @@ await writeMcap(path.join(outDir, "unchunked.mcap"), messages, { useChunks: fals
 await writeMcap(writeFolder(path.join(outDir, "lz4"), "mcap", "lz4_0.mcap", messages), messages, { compression: "lz4" });
 writeDb3(writeFolder(path.join(outDir, "db3"), "sqlite3", "db3_0.db3", messages), messages, false);
 writeDb3(writeFolder(path.join(outDir, "db3-zstd"), "sqlite3", "db3-zstd_0.db3", messages, "zstd"), messages, true);
+const whole = writeFolder(path.join(outDir, "db3-file-zstd"), "sqlite3", "db3-file-zstd_0.db3", messages, "zstd", "FILE");
+writeDb3(whole, messages, false);
+fs.writeFileSync(whole + ".zstd", zstd.compress(fs.readFileSync(whole), 3));
+fs.rmSync(whole);
 fs.writeFileSync(path.join(outDir, "scenario.json"), JSON.stringify(summary(messages), null, 1) + "\n");
 // The fuzz harnesses' seeds (tests/fuzz/ros2_bag_fuzz.cpp, cdr_messages_fuzz.cpp): the MCAP
 // files, and each message type in both byte orders behind its type byte.

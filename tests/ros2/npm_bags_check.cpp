@@ -22,7 +22,8 @@ using mrpt::obs::CObservationOdometry;
 namespace
 {
 std::string g_bags;
-const std::vector<std::string> kVariants{"zstd.mcap", "be.mcap", "unchunked.mcap", "lz4", "db3", "db3-zstd"};
+const std::vector<std::string> kVariants{"zstd.mcap", "be.mcap", "unchunked.mcap", "lz4",
+                                        "db3",       "db3-zstd", "db3-file-zstd"};
 
 std::vector<mrpt::obs::CObservation::Ptr> observations(BagReaderBase& r)
 {

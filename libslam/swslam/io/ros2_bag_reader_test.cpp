@@ -22,6 +22,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 using namespace swslam::io;
 using namespace swslam::io::testing;
@@ -180,6 +181,21 @@ std::string writeDb3Folder(const std::string& name, bool message_zstd,
   return dir.string();
 }
 
+/** The .db3 folder `name` compressed file by file (rosbag2's compression_mode FILE). */
+std::string writeFileZstdFolder(const std::string& name)
+{
+  const fs::path dir = writeDb3Folder(name, false);
+  std::ifstream in(dir / "bag_0.db3", std::ios::binary);
+  const std::vector<uint8_t> db((std::istreambuf_iterator<char>(in)), {});
+  const std::vector<uint8_t> z = zstdOf(db);
+  std::ofstream(dir / "bag_0.db3.zstd", std::ios::binary).write(reinterpret_cast<const char*>(z.data()), z.size());
+  fs::remove(dir / "bag_0.db3");
+  std::ofstream(dir / "metadata.yaml") << "rosbag2_bagfile_information:\n  version: 5\n  storage_identifier: sqlite3\n"
+                                       << "  relative_file_paths:\n    - bag_0.db3.zstd\n  compression_format: zstd\n"
+                                       << "  compression_mode: FILE\n";
+  return dir.string();
+}
+
 /** Every observation a reader gives, serialized by MRPT (every field), with its type. */
 template <class Reader>
 std::vector<std::vector<uint8_t>> observations(Reader& r)
@@ -203,7 +219,7 @@ TEST(Ros2BagReader, TheSameMessagesGiveTheSameObservationsAsAROS1Bag)
   const auto expected = observations(ros1);
   ASSERT_EQ(expected.size(), 2u * kScans);
   for (const std::string& path : {writeMcap("le", false), writeMcap("be", true), writeDb3Folder("db3", false),
-                                  writeDb3Folder("db3zstd", true)})
+                                  writeDb3Folder("db3zstd", true), writeFileZstdFolder("db3filezstd")})
   {
     Ros2BagReader r(path, {});
     EXPECT_EQ(r.scanTopic(), "/scan");

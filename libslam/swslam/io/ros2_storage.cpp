@@ -1,12 +1,14 @@
 #include <swslam/io/ros2_storage.h>
 
 #include <swslam/io/mcap_reader.h>
+#include <swslam/io/zstd_file.h>
 
 #include <sqlite3.h>
 #include <yaml-cpp/yaml.h>
 #include <zstd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -45,7 +47,41 @@ struct Layout
   std::vector<std::string> files;
   bool mcap = false;
   bool message_zstd = false;
+  bool file_zstd = false;
 };
+
+/** A folder of this process's under $TMPDIR (or /tmp), removed with all it holds. */
+struct ScratchFolder
+{
+  std::string path;
+  ScratchFolder()
+  {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/swslam-rosbag2-XXXXXX";
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a folder " + pattern);
+    path = pattern;
+  }
+  ~ScratchFolder()
+  {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+/** The files of a bag compressed file by file, decompressed into `scratch` (their names
+ * without .zstd). */
+std::vector<std::string> decompressed(const std::vector<std::string>& files, const ScratchFolder& scratch)
+{
+  std::vector<std::string> out;
+  for (const std::string& f : files)
+  {
+    std::string name = fs::path(f).filename().string();
+    if (endsWith(name, ".zstd")) name.resize(name.size() - 5);
+    out.push_back((fs::path(scratch.path) / name).string());
+    decompressZstdFile(f, out.back());
+  }
+  return out;
+}
 
 /** metadata.yaml of the rosbag2 folder `dir`. */
 Layout readMetadata(const std::string& dir)
@@ -63,10 +99,10 @@ Layout readMetadata(const std::string& dir)
     const std::string format = info["compression_format"].as<std::string>("");
     const std::string mode = info["compression_mode"].as<std::string>("");
     if (!format.empty() && format != "zstd") throw std::runtime_error("compression_format '" + format + "' (not zstd)");
-    if (!format.empty() && mode == "FILE")
-      throw std::runtime_error("its files are compressed whole (compression_mode FILE): decompress them first "
-                               "(zstd -d) and write a metadata.yaml without compression");
+    if (!format.empty() && mode != "FILE" && mode != "MESSAGE")
+      throw std::runtime_error("compression_mode '" + mode + "' (FILE or MESSAGE)");
     layout.message_zstd = format == "zstd" && mode == "MESSAGE";
+    layout.file_zstd = format == "zstd" && mode == "FILE";
     const YAML::Node files = info["relative_file_paths"];
     if (!files || !files.IsSequence() || files.size() == 0) throw std::runtime_error("it lists no relative_file_paths");
     for (const YAML::Node& f : files)
@@ -321,8 +357,19 @@ std::unique_ptr<Ros2Storage> openRos2Storage(const std::string& path)
     if (!fs::is_regular_file(fs::path(path) / "metadata.yaml"))
       throw std::runtime_error("'" + path + "' is a folder without metadata.yaml: not a rosbag2 bag");
     Layout layout = readMetadata(path);
-    if (layout.mcap) return std::make_unique<McapStorage>(layout.files, layout.message_zstd);
-    return std::make_unique<Db3Storage>(layout.files, layout.message_zstd);
+    std::shared_ptr<ScratchFolder> scratch;
+    if (layout.file_zstd)
+    {
+      scratch = std::make_shared<ScratchFolder>();
+      layout.files = decompressed(layout.files, *scratch);
+    }
+    std::unique_ptr<Ros2Storage> storage;
+    if (layout.mcap)
+      storage = std::make_unique<McapStorage>(layout.files, layout.message_zstd);
+    else
+      storage = std::make_unique<Db3Storage>(layout.files, layout.message_zstd);
+    storage->keep(scratch);
+    return storage;
   }
   if (!fs::is_regular_file(path)) throw std::runtime_error("cannot open bag '" + path + "': no such file");
   if (endsWith(path, ".db3")) return std::make_unique<Db3Storage>(std::vector<std::string>{path}, false);

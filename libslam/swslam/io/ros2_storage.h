@@ -4,7 +4,8 @@
 // .db3 files are read through SQLite (rosbag2's tables `topics` and `messages`, in timestamp
 // order), .mcap files through mcap_reader.h (in file order, as rosbag2 records them).
 // Messages compressed one by one with zstd (metadata.yaml's compression_mode MESSAGE) are
-// decompressed, each bounded by kMaxRos2MessageBytes.
+// decompressed, each bounded by kMaxRos2MessageBytes; files compressed whole (FILE) are
+// decompressed into a folder under $TMPDIR first (zstd_file.h), removed with the storage.
 
 #include <swslam/io/bag_reader.h>
 
@@ -37,14 +38,17 @@ class Ros2Storage
   /** The next message of the selected topics; false at the end. Throws std::runtime_error
    * naming the damage (the messages before it stay valid). */
   virtual bool next(Ros2Message& out) = 0;
+  /** Keeps `folder` (the files it reads, decompressed) as long as the storage lives. */
+  void keep(std::shared_ptr<void> folder) { kept_ = std::move(folder); }
 
  protected:
   std::vector<BagTopic> topics_;  ///< a damaged .mcap file's counts stop at the damage
+  std::shared_ptr<void> kept_;
 };
 
 /** Opens `path`: a rosbag2 folder, a .mcap or a .db3 file. Throws std::runtime_error naming
- * the problem (no metadata.yaml, a storage other than sqlite3 and mcap, files compressed whole,
- * a file that is missing or not of its format). */
+ * the problem (no metadata.yaml, a storage other than sqlite3 and mcap, a file that is missing,
+ * not of its format or whose zstd compression cannot be undone). */
 std::unique_ptr<Ros2Storage> openRos2Storage(const std::string& path);
 
 /** Whether `path` is a ROS 2 bag: a folder holding metadata.yaml, a file whose name ends in
