@@ -3,7 +3,6 @@
 #include <swslam/io/mcap_reader.h>
 #include <swslam/io/zstd_file.h>
 
-#include <sqlite3.h>
 #include <yaml-cpp/yaml.h>
 #include <zstd.h>
 
@@ -11,7 +10,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <set>
 
 namespace swslam::io
 {
@@ -22,24 +20,6 @@ namespace fs = std::filesystem;
 bool endsWith(const std::string& s, const std::string& suffix)
 {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-/** A message compressed with zstd (rosbag2's compression_mode MESSAGE), decompressed; its
- * size as its frame states it, bounded. */
-std::vector<uint8_t> unzstd(const std::vector<uint8_t>& in)
-{
-  const unsigned long long n = ZSTD_getFrameContentSize(in.data(), in.size());
-  if (n == ZSTD_CONTENTSIZE_ERROR) throw std::runtime_error("a message compressed with zstd is not a zstd frame");
-  if (n == ZSTD_CONTENTSIZE_UNKNOWN || n > kMaxRos2MessageBytes || n > mcapExpansionBound("zstd", in.size()))
-    throw std::runtime_error("a zstd-compressed message of " + std::to_string(in.size()) + " bytes states " +
-                             (n == ZSTD_CONTENTSIZE_UNKNOWN ? std::string("no size") : std::to_string(n) + " bytes") +
-                             " (at most " + std::to_string(kMaxRos2MessageBytes) + ")");
-  std::vector<uint8_t> out(n);
-  const size_t got = ZSTD_decompress(out.data(), out.size(), in.data(), in.size());
-  if (ZSTD_isError(got) || got != n)
-    throw std::runtime_error(std::string("a zstd-compressed message cannot be decompressed: ") +
-                             (ZSTD_isError(got) ? ZSTD_getErrorName(got) : "shorter than stated"));
-  return out;
 }
 
 struct Layout
@@ -128,227 +108,30 @@ Layout readMetadata(const std::string& dir)
   return layout;
 }
 
-/** Topic counts by name, as a sorted topic list. */
+}  // namespace
+
+std::vector<uint8_t> unzstdMessage(const std::vector<uint8_t>& in)
+{
+  const unsigned long long n = ZSTD_getFrameContentSize(in.data(), in.size());
+  if (n == ZSTD_CONTENTSIZE_ERROR) throw std::runtime_error("a message compressed with zstd is not a zstd frame");
+  if (n == ZSTD_CONTENTSIZE_UNKNOWN || n > kMaxRos2MessageBytes || n > mcapExpansionBound("zstd", in.size()))
+    throw std::runtime_error("a zstd-compressed message of " + std::to_string(in.size()) + " bytes states " +
+                             (n == ZSTD_CONTENTSIZE_UNKNOWN ? std::string("no size") : std::to_string(n) + " bytes") +
+                             " (at most " + std::to_string(kMaxRos2MessageBytes) + ")");
+  std::vector<uint8_t> out(n);
+  const size_t got = ZSTD_decompress(out.data(), out.size(), in.data(), in.size());
+  if (ZSTD_isError(got) || got != n)
+    throw std::runtime_error(std::string("a zstd-compressed message cannot be decompressed: ") +
+                             (ZSTD_isError(got) ? ZSTD_getErrorName(got) : "shorter than stated"));
+  return out;
+}
+
 std::vector<BagTopic> sortedTopics(std::map<std::string, BagTopic> by_name)
 {
   std::vector<BagTopic> out;
   for (auto& [name, t] : by_name) out.push_back(std::move(t));
   return out;
 }
-
-class McapStorage : public Ros2Storage
-{
- public:
-  McapStorage(std::vector<std::string> files, bool message_zstd) : files_(std::move(files)), zstd_(message_zstd)
-  {
-    std::map<std::string, BagTopic> by_name;
-    auto addChannels = [&] {
-      for (const auto& [id, c] : reader_->channels())
-      {
-        BagTopic& t = by_name[c.topic];
-        t.name = c.topic;
-        t.type = c.schema_name;
-      }
-    };
-    McapMessage m;
-    std::string problem;  // a damaged file: counted up to it, reported when read
-    for (file_ = 0; file_ < files_.size(); file_++)
-    {
-      reader_.reset();
-      try
-      {
-        reader_ = std::make_unique<McapReader>(files_[file_]);
-        while (reader_->next(m)) by_name[reader_->channels().at(m.channel_id).topic].messages++;
-        addChannels();
-      }
-      catch (const std::runtime_error& e)
-      {
-        if (!reader_) throw std::runtime_error(inFile(e.what()));  // not an MCAP file
-        addChannels();
-        problem = e.what();
-        break;
-      }
-    }
-    if (by_name.empty() && !problem.empty())  // damaged before its first channel
-      throw std::runtime_error("cannot read '" + files_[file_] + "': " + problem);
-    topics_ = sortedTopics(by_name);
-    select({});
-  }
-
-  void select(const std::vector<std::string>& topics) override
-  {
-    selected_ = std::set<std::string>(topics.begin(), topics.end());
-    file_ = 0;
-    reader_.reset();
-  }
-
-  bool next(Ros2Message& out) override
-  {
-    try
-    {
-      return nextOfFiles(out);
-    }
-    catch (const McapError& e)
-    {
-      throw std::runtime_error(inFile(e.what()));
-    }
-  }
-
- private:
-  std::string inFile(const std::string& what) const
-  {
-    return files_.size() == 1 ? what : "file '" + files_[file_] + "': " + what;
-  }
-
-  bool nextOfFiles(Ros2Message& out)
-  {
-    McapMessage m;
-    while (file_ < files_.size())
-    {
-      if (!reader_) reader_ = std::make_unique<McapReader>(files_[file_]);
-      if (!reader_->next(m))
-      {
-        reader_.reset();
-        file_++;
-        continue;
-      }
-      const McapChannel& c = reader_->channels().at(m.channel_id);
-      if (!selected_.count(c.topic)) continue;
-      if (c.message_encoding != "cdr")
-        throw std::runtime_error("topic '" + c.topic + "' is encoded as '" + c.message_encoding + "', not cdr");
-      out.topic = c.topic;
-      out.time_ns = m.log_time;
-      out.data = zstd_ ? unzstd(m.data) : std::move(m.data);
-      return true;
-    }
-    return false;
-  }
-
-  std::vector<std::string> files_;
-  bool zstd_;
-  std::set<std::string> selected_;
-  size_t file_ = 0;
-  std::unique_ptr<McapReader> reader_;
-};
-
-/** A prepared SQLite statement, finalized at the end of its scope. */
-using Statement = std::unique_ptr<sqlite3_stmt, int (*)(sqlite3_stmt*)>;
-
-class Db3Storage : public Ros2Storage
-{
- public:
-  Db3Storage(std::vector<std::string> files, bool message_zstd) : files_(std::move(files)), zstd_(message_zstd)
-  {
-    std::map<std::string, BagTopic> by_name;
-    for (file_ = 0; file_ < files_.size(); file_++)
-    {
-      open();
-      Statement q = prepare("SELECT t.name, t.type, COUNT(m.id) FROM topics t LEFT JOIN messages m ON m.topic_id = t.id "
-                            "GROUP BY t.id");
-      int rc;
-      while ((rc = sqlite3_step(q.get())) == SQLITE_ROW)
-      {
-        BagTopic& t = by_name[text(q.get(), 0)];
-        t.name = text(q.get(), 0);
-        t.type = text(q.get(), 1);
-        t.messages += static_cast<size_t>(sqlite3_column_int64(q.get(), 2));
-      }
-      if (rc != SQLITE_DONE) fail("its topics cannot be listed");
-    }
-    topics_ = sortedTopics(by_name);
-    select({});
-  }
-  ~Db3Storage() override { close(); }
-
-  void select(const std::vector<std::string>& topics) override
-  {
-    selected_ = topics;
-    file_ = 0;
-    close();
-  }
-
-  bool next(Ros2Message& out) override
-  {
-    while (file_ < files_.size())
-    {
-      if (!db_)
-      {
-        open();
-        std::string sql = "SELECT t.name, m.timestamp, m.data FROM messages m JOIN topics t ON m.topic_id = t.id "
-                          "WHERE t.name IN (";
-        for (size_t i = 0; i < selected_.size(); i++) sql += i ? ", ?" : "?";
-        sql += ") ORDER BY m.timestamp, m.id";
-        query_ = prepare(sql);
-        for (size_t i = 0; i < selected_.size(); i++)
-          sqlite3_bind_text(query_.get(), static_cast<int>(i + 1), selected_[i].c_str(), -1, SQLITE_TRANSIENT);
-      }
-      const int rc = sqlite3_step(query_.get());
-      if (rc == SQLITE_DONE)
-      {
-        close();
-        file_++;
-        continue;
-      }
-      if (rc != SQLITE_ROW) fail("a message cannot be read");
-      out.topic = text(query_.get(), 0);
-      const int64_t t = sqlite3_column_int64(query_.get(), 1);
-      if (t < 0) throw std::runtime_error("a message recorded at " + std::to_string(t) + " ns, before 1970");
-      out.time_ns = static_cast<uint64_t>(t);
-      const auto* blob = static_cast<const uint8_t*>(sqlite3_column_blob(query_.get(), 2));
-      const int n = sqlite3_column_bytes(query_.get(), 2);
-      if (static_cast<uint64_t>(n) > kMaxRos2MessageBytes)
-        throw std::runtime_error("a message of " + std::to_string(n) + " bytes (at most " +
-                                 std::to_string(kMaxRos2MessageBytes) + ")");
-      out.data.assign(blob, blob + n);
-      if (zstd_) out.data = unzstd(out.data);
-      return true;
-    }
-    return false;
-  }
-
- private:
-  void open()
-  {
-    if (sqlite3_open_v2(files_[file_].c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
-      fail("it cannot be opened");
-  }
-  void close()
-  {
-    query_.reset();
-    if (db_) sqlite3_close(db_);
-    db_ = nullptr;
-  }
-  Statement prepare(const std::string& sql)
-  {
-    sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db_, sql.c_str(), -1, &s, nullptr) != SQLITE_OK)
-    {
-      sqlite3_finalize(s);
-      fail("it is not a rosbag2 database");
-    }
-    return Statement(s, sqlite3_finalize);
-  }
-  static std::string text(sqlite3_stmt* s, int column)
-  {
-    const auto* p = sqlite3_column_text(s, column);
-    return p ? reinterpret_cast<const char*>(p) : "";
-  }
-  [[noreturn]] void fail(const std::string& what)
-  {
-    const std::string msg = "rosbag2 file '" + files_[file_] + "': " + what + " (SQLite: " +
-                            (db_ ? sqlite3_errmsg(db_) : "no connection") + ")";
-    close();
-    throw std::runtime_error(msg);
-  }
-
-  std::vector<std::string> files_;
-  bool zstd_;
-  std::vector<std::string> selected_;
-  size_t file_ = 0;
-  sqlite3* db_ = nullptr;
-  Statement query_{nullptr, sqlite3_finalize};
-};
-}  // namespace
 
 std::unique_ptr<Ros2Storage> openRos2Storage(const std::string& path)
 {
@@ -365,15 +148,15 @@ std::unique_ptr<Ros2Storage> openRos2Storage(const std::string& path)
     }
     std::unique_ptr<Ros2Storage> storage;
     if (layout.mcap)
-      storage = std::make_unique<McapStorage>(layout.files, layout.message_zstd);
+      storage = openMcapFiles(layout.files, layout.message_zstd);
     else
-      storage = std::make_unique<Db3Storage>(layout.files, layout.message_zstd);
+      storage = openDb3Files(layout.files, layout.message_zstd);
     storage->keep(scratch);
     return storage;
   }
   if (!fs::is_regular_file(path)) throw std::runtime_error("cannot open bag '" + path + "': no such file");
-  if (endsWith(path, ".db3")) return std::make_unique<Db3Storage>(std::vector<std::string>{path}, false);
-  return std::make_unique<McapStorage>(std::vector<std::string>{path}, false);
+  if (endsWith(path, ".db3")) return openDb3Files({path}, false);
+  return openMcapFiles({path}, false);
 }
 
 bool isRos2Bag(const std::string& path)

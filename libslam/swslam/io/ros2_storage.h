@@ -10,6 +10,7 @@
 #include <swslam/io/bag_reader.h>
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,19 @@ class Ros2Storage
  * the problem (no metadata.yaml, a storage other than sqlite3 and mcap, a file that is missing,
  * not of its format or whose zstd compression cannot be undone). */
 std::unique_ptr<Ros2Storage> openRos2Storage(const std::string& path);
+
+/** The storages openRos2Storage opens: .mcap files (mcap_storage.cpp: listed once to count their
+ * topics' messages, a damaged file counted up to the damage) and .db3 files (db3_storage.cpp);
+ * `message_zstd`: each message compressed by itself. */
+std::unique_ptr<Ros2Storage> openMcapFiles(std::vector<std::string> files, bool message_zstd);
+std::unique_ptr<Ros2Storage> openDb3Files(std::vector<std::string> files, bool message_zstd);
+
+/** A message compressed by itself with zstd, decompressed: its size as its frame states it, at
+ * most kMaxRos2MessageBytes and 32768 times its own. Throws std::runtime_error naming it. */
+std::vector<uint8_t> unzstdMessage(const std::vector<uint8_t>& in);
+
+/** The topics of a map by name, as a list sorted by name. */
+std::vector<BagTopic> sortedTopics(std::map<std::string, BagTopic> by_name);
 
 /** Whether `path` is a ROS 2 bag: a folder holding metadata.yaml, a file whose name ends in
  * .mcap or .db3, or one starting with the MCAP magic. */
