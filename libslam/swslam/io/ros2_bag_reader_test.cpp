@@ -104,9 +104,9 @@ std::string type(const std::string& topic)
 
 std::string temp(const std::string& name) { return (fs::temp_directory_path() / ("swslam_ros2_" + name)).string(); }
 
-std::string writeRos1Bag()
+std::string writeRos1Bag(const std::string& name)
 {
-  const std::string path = temp("ros1.bag");
+  const std::string path = temp(name + ".bag");
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   bag.write("/tf_static", ros::Time(999), tfStatic());
   for (int k = 0; k < kScans; k++)
@@ -215,7 +215,7 @@ std::vector<std::vector<uint8_t>> observations(Reader& r)
 
 TEST(Ros2BagReader, TheSameMessagesGiveTheSameObservationsAsAROS1Bag)
 {
-  BagReader ros1(writeRos1Bag(), {});
+  BagReader ros1(writeRos1Bag("ros1"), {});
   const auto expected = observations(ros1);
   ASSERT_EQ(expected.size(), 2u * kScans);
   for (const std::string& path : {writeMcap("le", false), writeMcap("be", true), writeDb3Folder("db3", false),
@@ -246,7 +246,7 @@ TEST(Ros2BagReader, AScanSourceReadsAFolderOrAFileAsAROS2Bag)
   EXPECT_EQ(n, kScans);
   EXPECT_EQ(source->stats().odometry, size_t(kScans));
   EXPECT_TRUE(isRos2Bag(writeMcap("named", false)));
-  EXPECT_FALSE(isRos2Bag(writeRos1Bag()));
+  EXPECT_FALSE(isRos2Bag(writeRos1Bag("not_ros2")));
   Ros2BagReader file(dir + "/bag_0.db3", {});  // a .db3 file alone, without its metadata.yaml
   EXPECT_EQ(observations(file).size(), 2u * kScans);
   EXPECT_FALSE(isRos2Bag(fs::temp_directory_path().string()));  // a folder without metadata.yaml
