@@ -24,7 +24,7 @@ int main(int argc, char** argv)
     TCLAP::UnlabeledValueArg<std::string> est("estimate", "Estimated trajectory (TUM)", true, "", "EST.tum", cmd);
     TCLAP::UnlabeledValueArg<std::string> reference(
         "reference", "Ground truth (TUM) for 'ate', relations file for 'relations', the log "
-        "(rawlog, CARMEN log or ROS bag) for 'consistency' and 'laser-optimum'", true, "", "GT.tum|FILE.relations|LOG", cmd);
+        "(rawlog, CARMEN log, ROS 1 or 2 bag) for 'consistency' and 'laser-optimum'", true, "", "GT.tum|FILE.relations|LOG", cmd);
     TCLAP::ValueArg<double> max_dt("", "max-dt", "Timestamp association tolerance (default 0.01)", false, 0.01,
                                    "seconds", cmd);
     TCLAP::ValueArg<double> segment("", "segment", "RPE segment length along the ground truth (default 1)", false,

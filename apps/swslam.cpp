@@ -1,4 +1,4 @@
-// swslam: sliding-window 2D LiDAR SLAM on a rawlog, CARMEN log or ROS 1 bag (see README and doc/system.md).
+// swslam: sliding-window 2D LiDAR SLAM on a rawlog, CARMEN log, ROS 1 or ROS 2 bag (see README and doc/system.md).
 #include "cli.h"
 #include "programs.h"
 #include "run_in_library.h"
@@ -10,7 +10,7 @@ int main(int argc, char** argv)
   TCLAP::CmdLine cmd("swslam: robust sliding-window 2D LiDAR SLAM (offline replay)", ' ', "0.1");
   TCLAP::ValueArg<std::string> config("c", "config", "Configuration (.ini; default: the installed config/default.ini)",
                                       false, "", "INI", cmd);
-  TCLAP::ValueArg<std::string> input("i", "input", "MRPT rawlog, CARMEN log (.log, .log.gz, .clf) or ROS 1 bag (.bag)",
+  TCLAP::ValueArg<std::string> input("i", "input", "MRPT rawlog, CARMEN log (.log, .log.gz, .clf), ROS 1 bag (.bag) or ROS 2 bag (rosbag2 folder, .mcap, .db3)",
                                      true, "", "LOG", cmd);
   TCLAP::ValueArg<std::string> output("o", "output", "Output directory (created if missing)", true, "",
                                       "DIR", cmd);

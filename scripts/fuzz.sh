@@ -8,7 +8,7 @@
 #
 # Usage: scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]
 #   harnesses (tests/fuzz/<name>_fuzz.cpp): rawlog_reader carmen_line carmen_log carmen2rawlog
-#   graph_io tum_io relations_io ini_config stats_csv (default: all)
+#   graph_io tum_io relations_io ini_config stats_csv ros2_bag cdr_messages (default: all)
 # Environment: FUZZ_RSS_MB / FUZZ_MALLOC_MB (2048), FUZZ_TIMEOUT (10 s per input; rawlog_reader
 #   at least 30 s),
 #   FUZZ_FORK=1 (go on after a crash, below), FUZZ_JOBS (build parallelism, default nproc),
@@ -22,7 +22,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-all=(rawlog_reader carmen_line carmen_log carmen2rawlog graph_io tum_io relations_io ini_config stats_csv)
+all=(rawlog_reader carmen_line carmen_log carmen2rawlog graph_io tum_io relations_io ini_config stats_csv ros2_bag
+  cdr_messages)
 seconds=${1:-600}
 [[ $seconds =~ ^[0-9]+$ && $seconds -gt 0 ]] || { echo "fuzz: SECONDS_PER_HARNESS must be a positive integer, got '$seconds'" >&2; exit 2; }
 shift || true
@@ -63,8 +64,21 @@ mkdir -p $out
   printf '"%s"\n' true false yes no inf -inf nan 1e19 -1 '\x0a' '#' ';'
 } > $out/ini_config.dict
 
+# The ROS 2 harnesses' seeds: bags written by independent writers (tests/ros2/make-bags.mjs, the
+# npm packages of its package-lock.json).
+if [[ " ${harnesses[*]} " == *" ros2_bag "* || " ${harnesses[*]} " == *" cdr_messages "* ]]; then
+  npm_dir=$build/ros2-npm
+  mkdir -p $npm_dir
+  cp tests/ros2/package.json tests/ros2/package-lock.json tests/ros2/make-bags.mjs $npm_dir/
+  (cd $npm_dir && npm ci --no-audit --no-fund --loglevel=error) &&
+    node $npm_dir/make-bags.mjs synthetic $build/ros2-bags > /dev/null ||
+    { echo "fuzz: cannot write the ROS 2 seeds (node, npm and sqlite3: scripts/install-deps.sh)" >&2; exit 2; }
+fi
+
 dict_of() {
   case $1 in
+    ros2_bag) echo tests/fuzz/dicts/mcap.dict ;;
+    cdr_messages) echo tests/fuzz/dicts/cdr.dict ;;
     carmen_line | carmen_log | carmen2rawlog) echo tests/fuzz/dicts/carmen.dict ;;
     graph_io) echo tests/fuzz/dicts/graph.dict ;;
     tum_io | relations_io | stats_csv) echo tests/fuzz/dicts/numbers.dict ;;
@@ -85,7 +99,9 @@ fuzz_one() {
   local dir=$out/$h corpus=$build/corpus/$h
   rm -rf "$dir"
   mkdir -p "$dir" "$corpus"
-  local seeds=("$root/tests/fuzz/seeds/$h")
+  local seeds=()
+  [[ -d tests/fuzz/seeds/$h ]] && seeds+=("$root/tests/fuzz/seeds/$h")
+  [[ -d $build/ros2-bags/fuzz-seeds/$h ]] && seeds+=("$root/$build/ros2-bags/fuzz-seeds/$h")
   [[ $h == ini_config ]] && seeds+=("$root/config")
   [[ -d tests/fuzz/regressions/$h ]] && seeds+=("$root/tests/fuzz/regressions/$h")
   # A damaged count makes the rawlog decoder's child fill its 1 GB budget before it is

@@ -16,9 +16,14 @@ packages=(
   libmrpt-graphslam-dev libmrpt-opengl-dev libmrpt-hwdrivers-dev libmrpt-tclap-dev
   mrpt-common
   librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libmrpt-ros1bridge-dev
+  libsqlite3-dev libzstd-dev liblz4-dev libyaml-cpp-dev sqlite3
   libegl1 libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
 )
+# The ROS 2 test bags are written by npm packages (tests/ros2/make-bags.sh): Debian's Node.js and
+# npm, unless a Node.js with its npm is installed already (NodeSource's nodejs package holds npm
+# and conflicts with Debian's).
+command -v npm > /dev/null || packages+=(nodejs npm)
 for arg in "$@"; do
   case $arg in
     --with-bench) packages+=(libceres-dev) ;;

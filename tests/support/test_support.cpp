@@ -110,6 +110,19 @@ mrpt::obs::CObservation2DRangeScan simulateObservation(const World& world,
   return obs;
 }
 
+std::string errorOf(const std::function<void()>& f)
+{
+  try
+  {
+    f();
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
 void withFileSizeLimit(size_t bytes, const std::function<void()>& f)
 {
   rlimit old{};

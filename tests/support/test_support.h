@@ -48,4 +48,7 @@ std::string tempDir(const std::string& name);
  * full disk refuses data with ENOSPC, without privileges. */
 void withFileSizeLimit(size_t bytes, const std::function<void()>& f);
 
+/** What `f` threw (its std::exception's what()); "" if it threw nothing. */
+std::string errorOf(const std::function<void()>& f);
+
 }  // namespace swslam::test

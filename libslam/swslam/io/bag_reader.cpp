@@ -18,10 +18,9 @@ namespace swslam::io
 {
 namespace
 {
-constexpr const char* kLaserScanType = "sensor_msgs/LaserScan";
+constexpr const char* kLaserScanType = BagReader::kScanType;
 constexpr const char* kOdometryType = "nav_msgs/Odometry";
 constexpr const char* kTfStaticTopic = "/tf_static";
-constexpr const char* kDefaultBaseFrame = "base_link";
 /** Larger than any scan (2^20 rays with intensities: 8 MiB); a message size past it is damage. */
 constexpr uint32_t kMaxMessageBytes = 64u << 20;
 /** Messages of one time read ahead (to give the odometry first), at most. */
@@ -83,7 +82,8 @@ struct BagReader::Bag
   rosbag::View::iterator it;
 };
 
-BagReader::BagReader(const std::string& path, const BagReaderOptions& opts) : path_(path), bag_(std::make_unique<Bag>())
+BagReader::BagReader(const std::string& path, const BagReaderOptions& opts)
+    : BagReaderBase(path), bag_(std::make_unique<Bag>())
 {
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open bag '" + path + "': no such file");
   if (!startsWithBagMagic(path))
@@ -112,7 +112,7 @@ BagReader::BagReader(const std::string& path, const BagReaderOptions& opts) : pa
       if (!seen) topics_.push_back({c->topic, c->datatype, rosbag::View(bag_->file, rosbag::TopicQuery(c->topic)).size()});
     }
     std::sort(topics_.begin(), topics_.end(), [](const BagTopic& a, const BagTopic& b) { return a.name < b.name; });
-    chooseTopics(opts);
+    chooseTopics(opts, kLaserScanType, kOdometryType);
     findSensorPose();
     std::vector<std::string> chosen;
     for (const std::string& t : {scan_topic_, odom_topic_})
@@ -132,59 +132,28 @@ BagReader::BagReader(const std::string& path, const BagReaderOptions& opts) : pa
 
 BagReader::~BagReader() = default;
 
-void BagReader::chooseTopics(const BagReaderOptions& opts)
-{
-  // One topic of `type`: the one asked for, or the bag's only one (none: empty).
-  auto choose = [&](const std::string& asked, const std::string& type, const std::string& option) -> std::string {
-    if (!asked.empty())
-    {
-      const auto it = std::find_if(topics_.begin(), topics_.end(), [&](const BagTopic& t) { return t.name == asked; });
-      if (it == topics_.end())
-        throw std::runtime_error("bag '" + path_ + "' has no topic '" + asked + "'; its topics: " + formatTopics(topics_));
-      if (it->type != type)
-        throw std::runtime_error("bag '" + path_ + "': topic '" + asked + "' is " + it->type + ", not " + type);
-      return asked;
-    }
-    const auto names = topicsOfType(topics_, type);
-    if (names.size() > 1)
-      throw std::runtime_error("bag '" + path_ + "' has " + std::to_string(names.size()) + " " + type +
-                               " topics (" + joined(names) + "): choose one with " + option);
-    return names.empty() ? "" : names.front();
-  };
-  scan_topic_ = choose(opts.scan_topic, kLaserScanType, "--scan-topic");
-  if (opts.read_odometry) odom_topic_ = choose(opts.odom_topic, kOdometryType, "--odom-topic");
-}
-
 void BagReader::findSensorPose()
 {
-  sensor_pose_source_ = "identity";
+  mounting_.source = "identity";
   if (scan_topic_.empty()) return;
   auto first = [&](const std::string& topic) {
     rosbag::View v(bag_->file, rosbag::TopicQuery(topic));
     if (v.begin() == v.end()) throw std::runtime_error("topic '" + topic + "' has no message");
     return *v.begin();
   };
-  std::string scan_frame, base_frame = kDefaultBaseFrame;
+  std::string scan_frame, odom_child;
   try
   {
     scan_frame = decode<sensor_msgs::LaserScan>(first(scan_topic_), laserScanLayoutProblem).header.frame_id;
-    if (!odom_topic_.empty())
-    {
-      const std::string child = decode<nav_msgs::Odometry>(first(odom_topic_), nullptr).child_frame_id;
-      if (!child.empty()) base_frame = child;
-    }
+    if (!odom_topic_.empty()) odom_child = decode<nav_msgs::Odometry>(first(odom_topic_), nullptr).child_frame_id;
   }
   catch (const std::exception& e)
   {
-    sensor_pose_source_ = std::string("identity (the first message cannot be read: ") + e.what() + ")";
-    return;
-  }
-  if (scan_frame.empty() || scan_frame == base_frame)
-  {
-    sensor_pose_source_ = "identity (the scans are in frame '" + base_frame + "')";
+    mounting_.source = std::string("identity (the first message cannot be read: ") + e.what() + ")";
     return;
   }
   std::vector<geometry_msgs::TransformStamped> transforms;
+  std::string tf_problem;
   const bool has_tf = std::any_of(topics_.begin(), topics_.end(), [](const BagTopic& t) {
     return t.name == kTfStaticTopic && t.type == "tf2_msgs/TFMessage";
   });
@@ -201,32 +170,10 @@ void BagReader::findSensorPose()
     }
     catch (const std::exception& e)  // the scans can still be read
     {
-      sensor_pose_source_ = std::string("identity (a /tf_static message cannot be read: ") + e.what() + ")";
-      return;
+      tf_problem = e.what();
     }
   }
-  if (poseInAncestor(transforms, scan_frame, base_frame, sensor_pose_))
-  {
-    sensor_pose_source_ = "/tf_static '" + base_frame + "' -> '" + scan_frame + "'";
-    if (const std::string problem = sensor::mountingProblem(sensor_pose_); !problem.empty())
-      throw std::runtime_error("bag '" + path_ + "': " + sensor_pose_source_ + ": " + problem);
-  }
-  else
-    sensor_pose_source_ = "identity (no /tf_static transform from '" + base_frame + "' to '" + scan_frame + "')";
-}
-
-bool BagReader::next(mrpt::obs::CObservation::Ptr& out)
-{
-  if (pending_.empty()) readSameTime();
-  if (pending_.empty())
-  {
-    if (deferred_error_) throw *deferred_error_;
-    return false;
-  }
-  out = pending_.front();
-  pending_.pop_front();
-  read_++;
-  return true;
+  mounting_ = mountingFromTf(scan_frame, odom_child, transforms, tf_problem, path_);
 }
 
 void BagReader::readSameTime()
@@ -251,7 +198,7 @@ void BagReader::readSameTime()
         auto msg = decode<sensor_msgs::LaserScan>(m, laserScanLayoutProblem);
         if (msg.header.stamp.isZero()) msg.header.stamp = m.getTime();
         pending_.push_back(
-            std::make_shared<mrpt::obs::CObservation2DRangeScan>(scanFromRos(msg, scan_topic_, sensor_pose_)));
+            std::make_shared<mrpt::obs::CObservation2DRangeScan>(scanFromRos(msg, scan_topic_, mounting_.pose)));
       }
       else
       {
@@ -264,18 +211,70 @@ void BagReader::readSameTime()
   }
   catch (const std::exception& e)  // ros::Exception (rosbag's, deserialization) and ours
   {
-    const size_t index = read_ + pending_.size();
-    std::ostringstream where;
-    where << "bag '" << path_ << "': message #" << index << " of " << total_ << " cannot be read" << at;
-    deferred_error_ = std::make_shared<BagError>(where.str() + ": " + e.what(), index);
+    failReading(at, e.what());
   }
-  // rosbag orders messages of one time arbitrarily; a rawlog gives the odometry first.
+  odometryFirst();
+}
+
+bool BagReaderBase::next(mrpt::obs::CObservation::Ptr& out)
+{
+  if (pending_.empty()) readSameTime();
+  if (pending_.empty())
+  {
+    if (deferred_error_) throw *deferred_error_;
+    return false;
+  }
+  out = pending_.front();
+  pending_.pop_front();
+  read_++;
+  return true;
+}
+
+void BagReaderBase::chooseTopics(const BagReaderOptions& opts, const std::string& scan_type,
+                                 const std::string& odom_type)
+{
+  scan_topic_ = chooseTopic(topics_, opts.scan_topic, scan_type, "--scan-topic", path_);
+  if (opts.read_odometry) odom_topic_ = chooseTopic(topics_, opts.odom_topic, odom_type, "--odom-topic", path_);
+}
+
+void BagReaderBase::failReading(const std::string& at, const std::string& what)
+{
+  const size_t index = read_ + pending_.size();
+  deferred_error_ = std::make_shared<BagError>("bag '" + path_ + "': message #" + std::to_string(index) + " of " +
+                                                   std::to_string(total_) + " cannot be read" + at + ": " + what,
+                                               index);
+}
+
+void BagReaderBase::odometryFirst()
+{
   std::stable_partition(pending_.begin(), pending_.end(), [](const mrpt::obs::CObservation::Ptr& o) {
     return std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o) != nullptr;
   });
 }
 
-double BagReader::fractionRead() const { return total_ == 0 ? 1.0 : double(read_) / double(total_); }
+double BagReaderBase::fractionRead() const
+{
+  return total_ == 0 ? 1.0 : std::min(1.0, double(read_) / double(total_));
+}
+
+std::string chooseTopic(const std::vector<BagTopic>& topics, const std::string& asked, const std::string& type,
+                        const std::string& option, const std::string& path)
+{
+  if (!asked.empty())
+  {
+    const auto it = std::find_if(topics.begin(), topics.end(), [&](const BagTopic& t) { return t.name == asked; });
+    if (it == topics.end())
+      throw std::runtime_error("bag '" + path + "' has no topic '" + asked + "'; its topics: " + formatTopics(topics));
+    if (it->type != type)
+      throw std::runtime_error("bag '" + path + "': topic '" + asked + "' is " + it->type + ", not " + type);
+    return asked;
+  }
+  const auto names = topicsOfType(topics, type);
+  if (names.size() > 1)
+    throw std::runtime_error("bag '" + path + "' has " + std::to_string(names.size()) + " " + type + " topics (" +
+                             joined(names) + "): choose one with " + option);
+  return names.empty() ? "" : names.front();
+}
 
 std::string formatTopics(const std::vector<BagTopic>& topics)
 {

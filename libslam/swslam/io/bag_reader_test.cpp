@@ -9,6 +9,8 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <rosbag/bag.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,6 +22,7 @@
 
 using namespace swslam;
 using namespace swslam::io;
+using swslam::test::errorOf;
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::obs::CObservationOdometry;
 
@@ -107,18 +110,6 @@ ReadResult readAll(BagReader& r)
   return out;
 }
 
-std::string errorOf(const std::function<void()>& f)
-{
-  try
-  {
-    f();
-  }
-  catch (const std::exception& e)
-  {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST(BagReader, ScansAndOdometryInTimeOrder)

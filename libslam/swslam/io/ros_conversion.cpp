@@ -94,8 +94,24 @@ sensor_msgs::LaserScan scanToRos(const CObservation2DRangeScan& scan, const std:
   return msg;
 }
 
+namespace
+{
+/** Throws std::invalid_argument unless `q` is a rotation: finite, of norm 1 within MRPT's
+ * tolerance (its quaternion would throw a logic_error with a call stack). */
+void requireRotation(const geometry_msgs::Quaternion& q)
+{
+  const double n2 = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+  if (std::isfinite(n2) && std::abs(n2 - 1) < 1e-3) return;
+  char buf[300];
+  std::snprintf(buf, sizeof(buf), "a rotation quaternion (%g, %g, %g, %g) of norm %g, not 1", q.x, q.y, q.z, q.w,
+                std::sqrt(n2));
+  throw std::invalid_argument(buf);
+}
+}  // namespace
+
 CObservationOdometry odometryFromRos(const nav_msgs::Odometry& msg, const std::string& label)
 {
+  requireRotation(msg.pose.pose.orientation);
   CObservationOdometry odo;
   odo.timestamp = mrpt::ros1bridge::fromROS(msg.header.stamp);
   odo.sensorLabel = label;
@@ -139,6 +155,7 @@ geometry_msgs::TransformStamped transformToRos(const CPose3D& pose, const std::s
 
 CPose3D transformFromRos(const geometry_msgs::Transform& t)
 {
+  requireRotation(t.rotation);
   geometry_msgs::Pose p;
   p.position.x = t.translation.x;
   p.position.y = t.translation.y;
@@ -167,6 +184,43 @@ bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transfor
     frame = it->second->header.frame_id;
   }
   return false;
+}
+
+SensorMounting mountingFromTf(const std::string& scan_frame, const std::string& odom_child,
+                              const std::vector<geometry_msgs::TransformStamped>& transforms,
+                              const std::string& tf_problem, const std::string& path)
+{
+  const std::string base_frame = odom_child.empty() ? "base_link" : odom_child;
+  SensorMounting m;
+  if (scan_frame.empty() || scan_frame == base_frame)
+  {
+    m.source = "identity (the scans are in frame '" + base_frame + "')";
+    return m;
+  }
+  if (!tf_problem.empty())
+  {
+    m.source = "identity (a /tf_static message cannot be read: " + tf_problem + ")";
+    return m;
+  }
+  const std::string link = "/tf_static '" + base_frame + "' -> '" + scan_frame + "'";
+  bool linked = false;
+  try
+  {
+    linked = poseInAncestor(transforms, scan_frame, base_frame, m.pose);
+  }
+  catch (const std::invalid_argument& e)  // a transform that is no pose
+  {
+    throw std::runtime_error("bag '" + path + "': " + link + ": " + e.what());
+  }
+  if (!linked)
+  {
+    m.source = "identity (no /tf_static transform from '" + base_frame + "' to '" + scan_frame + "')";
+    return m;
+  }
+  m.source = link;
+  if (const std::string problem = sensor::mountingProblem(m.pose); !problem.empty())
+    throw std::runtime_error("bag '" + path + "': " + m.source + ": " + problem);
+  return m;
 }
 
 namespace

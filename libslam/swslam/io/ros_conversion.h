@@ -5,6 +5,8 @@
 // (a 5-ray scan r0..r4 comes back as r0 r0 r1 r2 r3), and it keeps no ray past 99% of
 // range_max. Here every ray keeps its index and angle.
 
+#include <swslam/io/bag_reader.h>
+
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3D.h>
@@ -45,7 +47,9 @@ mrpt::obs::CObservation2DRangeScan scanFromRos(const sensor_msgs::LaserScan& msg
  * /tf_static): rays counter-clockwise from -aperture/2; invalid rays +inf (no return). */
 sensor_msgs::LaserScan scanToRos(const mrpt::obs::CObservation2DRangeScan& scan, const std::string& frame_id);
 
-/** The planar odometry of `msg` (its pose's x, y and yaw; the twist as local velocities). */
+/** The planar odometry of `msg` (its pose's x, y and yaw; the twist as local velocities).
+ * Throws std::invalid_argument naming it if its orientation is no rotation (a quaternion not
+ * finite or not of norm 1: MRPT's own check would throw a logic_error with a call stack). */
 mrpt::obs::CObservationOdometry odometryFromRos(const nav_msgs::Odometry& msg, const std::string& label);
 
 /** The odometry as a ROS message: pose of `child_frame` in `frame`. */
@@ -56,13 +60,25 @@ nav_msgs::Odometry odometryToRos(const mrpt::obs::CObservationOdometry& odo, con
 geometry_msgs::TransformStamped transformToRos(const mrpt::poses::CPose3D& pose, const std::string& parent,
                                                const std::string& child, const ros::Time& stamp);
 
-/** The pose of `child` in `parent` that a transform message states. */
+/** The pose of `child` in `parent` that a transform message states. Throws
+ * std::invalid_argument if its rotation is no rotation (as odometryFromRos). */
 mrpt::poses::CPose3D transformFromRos(const geometry_msgs::Transform& t);
 
 /** The pose of frame `child` in frame `ancestor`, composed along the parent links of
  * `transforms` (a tf tree); false if `ancestor` is not above `child` in it. */
 bool poseInAncestor(const std::vector<geometry_msgs::TransformStamped>& transforms, const std::string& child,
                     const std::string& ancestor, mrpt::poses::CPose3D& pose);
+
+/** The scanner's pose for a bag (ROS 1 or 2) at `path`: the pose of the scans' frame
+ * `scan_frame` in the vehicle's frame (the odometry's child frame `odom_child`, else
+ * base_link) composed from the /tf_static `transforms`; identity, its source saying why, if
+ * the scans are in the vehicle's frame, if `tf_problem` (a /tf_static message that could not
+ * be read) is not empty, or if no transforms link the frames. Throws std::runtime_error
+ * "bag 'P': /tf_static 'base' -> 'scan': ..." if the pose is no mounting
+ * (sensor::mountingProblem) or a transform's rotation is no rotation. */
+SensorMounting mountingFromTf(const std::string& scan_frame, const std::string& odom_child,
+                              const std::vector<geometry_msgs::TransformStamped>& transforms,
+                              const std::string& tf_problem, const std::string& path);
 
 /** Why the serialized `bytes` are not a well-formed message of that type ("" if they are): the
  * lengths its arrays state must fit in the bytes, checked before ROS's deserializer sizes a

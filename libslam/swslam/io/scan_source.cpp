@@ -2,6 +2,7 @@
 
 #include <swslam/geometry/se2_scaling.h>
 #include <swslam/io/gzip_file.h>
+#include <swslam/io/ros2_bag_reader.h>
 
 #include <mrpt/core/format.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -176,7 +177,9 @@ class CarmenSource : public SourceBase
   bool laser_only_;
 };
 
-/** A ROS bag: the scans of one LaserScan topic (their label) and the odometry of one topic. */
+/** A ROS 1 or ROS 2 bag (BagReader or Ros2BagReader): the scans of one LaserScan topic (their
+ * label) and the odometry of one topic. */
+template <class Reader>
 class BagSource : public SourceBase
 {
  public:
@@ -194,8 +197,9 @@ class BagSource : public SourceBase
   }
   std::string describe() const override
   {
-    if (reader_.scanTopic().empty()) return "ROS bag " + reader_.path() + " (no LaserScan topic)";
-    return "ROS bag " + reader_.path() + " (scans " + reader_.scanTopic() + ", sensor pose " +
+    const std::string bag = std::string(Reader::kFormat) + " " + reader_.path();
+    if (reader_.scanTopic().empty()) return bag + " (no LaserScan topic)";
+    return bag + " (scans " + reader_.scanTopic() + ", sensor pose " +
            reader_.sensorPoseSource() + ", " +
            (reader_.odomTopic().empty() ? std::string(opts_.use_odometry ? "no odometry topic: laser only"
                                                                          : "odometry not used")
@@ -207,7 +211,7 @@ class BagSource : public SourceBase
   {
     if (stats_.scans > 0) return "";
     if (reader_.scanTopic().empty())
-      return "no sensor_msgs/LaserScan topic in it; its topics: " + formatTopics(reader_.topics());
+      return std::string("no ") + Reader::kScanType + " topic in it; its topics: " + formatTopics(reader_.topics());
     return "no message on its LaserScan topic " + reader_.scanTopic() + "; its topics: " +
            formatTopics(reader_.topics());
   }
@@ -221,7 +225,7 @@ class BagSource : public SourceBase
     return {opts.scan_topic.empty() ? opts.sensor_label : opts.scan_topic, opts.odom_topic, opts.use_odometry};
   }
 
-  BagReader reader_;
+  Reader reader_;
 };
 
 }  // namespace
@@ -264,7 +268,8 @@ std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSo
                                            const CarmenParams& carmen)
 {
   requireLogFile(path);  // before isBagFile reads its first bytes
-  if (isBagFile(path)) return std::make_unique<BagSource>(path, opts);
+  if (isRos2Bag(path)) return std::make_unique<BagSource<Ros2BagReader>>(path, opts);
+  if (isBagFile(path)) return std::make_unique<BagSource<BagReader>>(path, opts);
   if (!opts.scan_topic.empty() || !opts.odom_topic.empty())
     throw std::runtime_error("'" + path + "' is not a ROS bag: scan and odometry topics apply only to bags");
   for (const char* ext : {".log", ".log.gz", ".clf", ".clf.gz"})

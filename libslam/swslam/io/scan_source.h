@@ -1,5 +1,6 @@
 #pragma once
-// Where a run's scans come from: an MRPT rawlog (either format), a CARMEN log or a ROS 1 bag,
+// Where a run's scans come from: an MRPT rawlog (either format), a CARMEN log, a ROS 1 bag or a
+// ROS 2 bag (a rosbag2 folder, a .mcap or .db3 file),
 // read one scan at a time. Odometry found in the log (CObservationOdometry readings, rawlog
 // actions, nav_msgs/Odometry messages) becomes each scan's odometry increment since the
 // previous scan, unless disabled.
@@ -58,8 +59,9 @@ class ScanSource
  * that it held no laser scan at all. Empty if it gave scans. */
 std::string noScanReason(const ScanSourceStats& stats, const std::string& sensor_label);
 
-/** Opens `path` as a CARMEN log if its name ends in .log or .log.gz (or .clf), as a ROS bag if
- * it is one (isBagFile), else as a rawlog. Throws std::runtime_error if it cannot be opened, if
+/** Opens `path` as a ROS 2 bag if it is one (isRos2Bag: a folder with metadata.yaml, a .mcap
+ * or .db3 file), as a ROS 1 bag if it is one (isBagFile), as a CARMEN log if its name ends in
+ * .log or .log.gz (or .clf), else as a rawlog. Throws std::runtime_error if it cannot be opened, if
  * it is a pipe, socket or device (a FIFO would block the open), or if topics are given for an
  * input that is not a bag. */
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& opts,
