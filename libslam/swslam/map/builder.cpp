@@ -19,11 +19,12 @@ void MapBuilder::insert(MapNodeId id, const mrpt::obs::CObservation2DRangeScan& 
   std::lock_guard<std::mutex> write(write_mutex_);
   if (nodes_.count(id))
     throw std::invalid_argument("map: node " + std::to_string(id) + " is already inserted");
-  Node node{sanitizedScan(scan, params_), vehicle_pose, {}};
-  node.contribution = computeContribution(node.scan, vehicle_pose, params_, scratch_);
+  const mrpt::obs::CObservation2DRangeScan sanitized = sanitizedScan(scan, params_);
+  const ScanContribution contribution = computeContribution(sanitized, vehicle_pose, params_, scratch_);
+  Node node{StoredScan(sanitized), vehicle_pose};
   {
     std::lock_guard<std::mutex> lock(grid_mutex_);
-    grid_.add(node.contribution, +1);
+    grid_.add(contribution, +1);
   }
   nodes_.emplace(id, std::move(node));
 }
@@ -38,9 +39,11 @@ void MapBuilder::remove(MapNodeId id)
   std::lock_guard<std::mutex> write(write_mutex_);
   const auto it = nodes_.find(id);
   if (it == nodes_.end()) throw std::invalid_argument("map: unknown node " + std::to_string(id));
+  const ScanContribution contribution =
+      computeContribution(it->second.scan.restore(), it->second.pose, params_, scratch_);
   {
     std::lock_guard<std::mutex> lock(grid_mutex_);
-    grid_.add(it->second.contribution, -1);
+    grid_.add(contribution, -1);
   }
   nodes_.erase(it);
 }
@@ -50,14 +53,11 @@ ReinsertReport MapBuilder::reinsertMoved(const std::map<MapNodeId, mrpt::poses::
 {
   std::lock_guard<std::mutex> write(write_mutex_);
   ReinsertReport report;
-  // Ray tracing first, without holding the grid: readers keep reading the old map.
-  struct Change
-  {
-    Node* node;
-    mrpt::poses::CPose2D pose;
-    ScanContribution contribution;
-  };
-  std::vector<Change> changes;
+  // Ray tracing first, without holding the grid: readers keep reading the old map. A node's
+  // old contribution is traced again from its scan at its old pose (the same deltas as when it
+  // was added: computeContribution is deterministic), so that no node keeps its own.
+  SumsChange change;
+  std::vector<std::pair<Node*, mrpt::poses::CPose2D>> moved;
   for (const auto& [id, pose] : poses)
   {
     if (!std::isfinite(pose.x()) || !std::isfinite(pose.y()) || !std::isfinite(pose.phi()))
@@ -74,20 +74,19 @@ ReinsertReport MapBuilder::reinsertMoved(const std::map<MapNodeId, mrpt::poses::
       report.unchanged++;
       continue;
     }
-    changes.push_back({&it->second, pose, computeContribution(it->second.scan, pose, params_, scratch_)});
+    Node& node = it->second;
+    const mrpt::obs::CObservation2DRangeScan scan = node.scan.restore();
+    change.add(computeContribution(scan, node.pose, params_, scratch_), -1);
+    change.add(computeContribution(scan, pose, params_, scratch_), +1);
+    moved.emplace_back(&node, pose);
     report.moved++;
   }
   if (poses.size() == 1 && report.unknown == 1)
     throw std::invalid_argument("map: unknown node " + std::to_string(poses.begin()->first));
 
   std::lock_guard<std::mutex> lock(grid_mutex_);
-  for (auto& change : changes)
-  {
-    grid_.add(change.node->contribution, -1);
-    grid_.add(change.contribution, +1);
-    change.node->contribution = std::move(change.contribution);
-    change.node->pose = change.pose;
-  }
+  grid_.apply(change);
+  for (auto& [node, pose] : moved) node->pose = pose;
   return report;
 }
 
@@ -115,8 +114,7 @@ size_t MapBuilder::bytes() const
 {
   std::lock_guard<std::mutex> write(write_mutex_);
   size_t b = 0;
-  for (const auto& [id, node] : nodes_)
-    b += node.contribution.bytes() + node.scan.getScanSize() * (sizeof(float) + 1);
+  for (const auto& [id, node] : nodes_) b += node.scan.bytes();
   std::lock_guard<std::mutex> lock(grid_mutex_);
   return b + grid_.bytes();
 }

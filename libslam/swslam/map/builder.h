@@ -1,7 +1,8 @@
 #pragma once
 // Map construction (paper sec. IV, Fig. 1): the occupancy grid built from the nodes' scans,
 // where a node whose pose changes has its old contribution removed exactly before its scan
-// is inserted at the new pose.
+// is inserted at the new pose. A node keeps its scan and pose only: its contribution is traced
+// again when it must be removed, so that memory per node is its scan's.
 //
 // Threading: one thread (the map thread) calls the mutating methods; any thread may call
 // snapshot() and the const accessors. Writers are serialized by write_mutex_; the grid is
@@ -10,6 +11,7 @@
 
 #include <swslam/map/params.h>
 #include <swslam/map/scan_contribution.h>
+#include <swslam/map/stored_scan.h>
 #include <swslam/map/summed_grid.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -61,7 +63,7 @@ class MapBuilder
   /** Pose at which node `id`'s scan is in the map. Throws for an unknown node. */
   mrpt::poses::CPose2D nodePose(MapNodeId id) const;
   size_t nodeCount() const;
-  /** Memory held by the grid, the sums and the per-node contributions [bytes]. */
+  /** Memory held by the grid, the sums and the nodes' scans [bytes]. */
   size_t bytes() const;
 
   const MapParams& params() const { return params_; }
@@ -69,9 +71,8 @@ class MapBuilder
  private:
   struct Node
   {
-    mrpt::obs::CObservation2DRangeScan scan;  ///< sanitized copy
-    mrpt::poses::CPose2D pose;
-    ScanContribution contribution;
+    StoredScan scan;                          ///< sanitized copy
+    mrpt::poses::CPose2D pose;                ///< where its contribution is in the sums
   };
 
   const MapParams params_;

@@ -40,7 +40,50 @@ int cellCount(double length, double resolution, const char* what)
                                 " m (at most " + std::to_string(SummedGrid::kMaxCellsPerLength) + ")");
   return static_cast<int>(n);
 }
+
+void checkSign(int sign)
+{
+  if (sign != 1 && sign != -1) throw std::invalid_argument("SummedGrid: a contribution's sign must be +-1");
+}
+
+/** Calls f(x, y, offset, n) for each piece of `c`'s runs that lies in one tile: cells x .. x+n-1
+ * of row y, whose deltas start at c.deltas[offset]. */
+template <class F>
+void forEachTilePiece(const ScanContribution& c, F&& f)
+{
+  for (const auto& run : c.runs)
+    for (int k = 0; k < static_cast<int>(run.length);)
+    {
+      const int x = run.x0 + k;
+      const int n = std::min(static_cast<int>(run.length) - k, SummedGrid::kTileSize - (x - tileOf(x) * SummedGrid::kTileSize));
+      f(x, run.y, run.offset + k, n);
+      k += n;
+    }
+}
+
+/** Index in a tile of global cell (x, y). */
+int inTile(int x, int y)
+{
+  return (y - tileOf(y) * SummedGrid::kTileSize) * SummedGrid::kTileSize + (x - tileOf(x) * SummedGrid::kTileSize);
+}
 }  // namespace
+
+void SumsChange::add(const ScanContribution& c, int sign)
+{
+  checkSign(sign);
+  if (sign > 0 && !c.runs.empty()) grown_.push_back(c.box);
+  forEachTilePiece(c, [&](int x, int y, size_t offset, int n) {
+    auto& tile = tiles_[{tileOf(y), tileOf(x)}];
+    if (!tile) tile = std::make_unique<int32_t[]>(kTileCells);
+    int32_t* s = tile.get() + inTile(x, y);
+    for (int i = 0; i < n; i++) s[i] += sign * c.deltas[offset + i];
+  });
+}
+
+size_t SumsChange::bytes() const
+{
+  return tiles_.size() * kTileCells * sizeof(int32_t) + grown_.size() * sizeof(CellBox);
+}
 
 SummedGrid::SummedGrid(double resolution, double half_size, double grow_margin) : resolution_(resolution)
 {
@@ -85,28 +128,29 @@ int32_t SummedGrid::sum(int x, int y) const
 
 void SummedGrid::add(const ScanContribution& c, int sign)
 {
-  if (sign != 1 && sign != -1) throw std::invalid_argument("SummedGrid::add: sign must be +-1");
+  checkSign(sign);
   if (!box_.contains(c.box)) growToContain(c.box);
-  for (const auto& run : c.runs)
-  {
-    const int y = run.y;
-    const int tile_row = (y - tileOf(y) * kTileSize) * kTileSize;
-    Grid::cellType* g = grid_.getRow(y - box_.y0) + (run.x0 - box_.x0);
-    const auto* d = &c.deltas[run.offset];
-    // The run, split where it crosses into the next tile.
-    for (int k = 0; k < static_cast<int>(run.length);)
+  forEachTilePiece(c, [&](int x, int y, size_t offset, int n) {
+    int32_t* s = tileAt(x, y) + inTile(x, y);
+    Grid::cellType* g = grid_.getRow(y - box_.y0) + (x - box_.x0);
+    for (int i = 0; i < n; i++)
     {
-      const int x = run.x0 + k;
-      const int in_tile = x - tileOf(x) * kTileSize;
-      const int n = std::min(static_cast<int>(run.length) - k, kTileSize - in_tile);
-      int32_t* s = tileAt(x, y) + tile_row + in_tile;
-      for (int i = 0; i < n; i++)
-      {
-        s[i] += sign * d[k + i];
-        g[k + i] = clampToCell(s[i]);
-      }
-      k += n;
+      s[i] += sign * c.deltas[offset + i];
+      g[i] = clampToCell(s[i]);
     }
+  });
+}
+
+void SummedGrid::apply(const SumsChange& change)
+{
+  for (const auto& b : change.grown_)
+    if (!box_.contains(b)) growToContain(b);
+  for (const auto& [tile, sums] : change.tiles_)
+  {
+    const auto [ty, tx] = tile;
+    int32_t* s = tileAt(tx * kTileSize, ty * kTileSize);
+    for (size_t i = 0; i < kTileCells; i++) s[i] += sums[i];
+    mirrorTile(tx, ty);
   }
 }
 

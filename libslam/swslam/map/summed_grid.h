@@ -12,11 +12,31 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace swslam::map
 {
+/** Changes to a SummedGrid gathered before they are applied at once (SummedGrid::apply): the
+ * sum of the contributions added, in tiles aligned with the grid's, and the boxes of those
+ * added with sign +1 in order, so that the grid grows as it would for each in turn. Its memory
+ * is bounded by the area the contributions cover, not by their number. */
+class SumsChange
+{
+ public:
+  /** Adds `sign` (+1 or -1) times `c`. */
+  void add(const ScanContribution& c, int sign);
+  bool empty() const { return tiles_.empty(); }
+  size_t bytes() const;
+
+ private:
+  friend class SummedGrid;
+  std::map<std::pair<int, int>, std::unique_ptr<int32_t[]>> tiles_;  ///< (tile y, tile x) -> sums
+  std::vector<CellBox> grown_;  ///< boxes added with sign +1, in order
+};
+
 class SummedGrid
 {
  public:
@@ -32,6 +52,8 @@ class SummedGrid
 
   /** Adds `sign` (+1 or -1) times `c` to the sums and refreshes the mirrored cells. */
   void add(const ScanContribution& c, int sign);
+  /** Adds `change`: the same sums, cells and bounds as adding its contributions one by one. */
+  void apply(const SumsChange& change);
 
   const mrpt::maps::COccupancyGridMap2D& grid() const { return grid_; }
   const CellBox& box() const { return box_; }

@@ -17,6 +17,7 @@ namespace
 using swslam::map::CellBox;
 using swslam::map::ScanContribution;
 using swslam::map::SummedGrid;
+using swslam::map::SumsChange;
 using Grid = mrpt::maps::COccupancyGridMap2D;
 
 /** A contribution of random runs in the cell box [x0, x0 + w) x [y0, y0 + h). */
@@ -119,6 +120,46 @@ TEST(SummedGrid, TiledSumsEqualAPlainSumThroughGrowthOnEverySide)
   for (auto v : grid.grid().getRawMap()) ASSERT_EQ(v, 0);
   for (int y = grid.box().y0; y < grid.box().y1; y += 7)
     for (int x = grid.box().x0; x < grid.box().x1; x += 7) ASSERT_EQ(grid.sum(x, y), 0);
+}
+
+TEST(SummedGrid, AChangeAppliedAtOnceEqualsItsContributionsAddedOneByOne)
+{
+  std::mt19937 rng(23);
+  const double res = 0.5;
+  SummedGrid one_by_one(res, 10, 5), at_once(res, 10, 5);
+  std::vector<ScanContribution> before;
+  for (const CellBox& p : std::vector<CellBox>{{-15, -15, 15, 15}, {-70, -10, -50, 30}})
+  {
+    before.push_back(randomContribution(rng, p.x0, p.y0, p.width(), p.height()));
+    one_by_one.add(before.back(), +1);
+    at_once.add(before.back(), +1);
+  }
+  // Out with the first, in with new ones beyond two sides (the grid grows for each in turn),
+  // out with the second: as an optimization's re-insertion does.
+  SumsChange change;
+  std::map<std::pair<int, int>, int32_t> sums;
+  addTo(sums, before[1], +1);
+  one_by_one.add(before[0], -1);
+  change.add(before[0], -1);
+  for (const CellBox& p : std::vector<CellBox>{{60, 60, 140, 75}, {-200, -130, -120, -60}, {-5, 250, 70, 330}})
+  {
+    const ScanContribution c = randomContribution(rng, p.x0, p.y0, p.width(), p.height());
+    one_by_one.add(c, +1);
+    change.add(c, +1);
+    addTo(sums, c, +1);
+  }
+  one_by_one.add(before[1], -1);
+  change.add(before[1], -1);
+  addTo(sums, before[1], -1);
+  EXPECT_FALSE(change.empty());
+  EXPECT_GT(change.bytes(), 0u);
+  at_once.apply(change);
+  EXPECT_EQ(at_once.box().x0, one_by_one.box().x0);
+  EXPECT_EQ(at_once.box().y0, one_by_one.box().y0);
+  EXPECT_EQ(at_once.box().x1, one_by_one.box().x1);
+  EXPECT_EQ(at_once.box().y1, one_by_one.box().y1);
+  expectEqual(at_once, sums);
+  expectEqual(one_by_one, sums);
 }
 
 TEST(SummedGrid, OutsideTheGridTheSumIsZeroAndABadSignIsAnError)

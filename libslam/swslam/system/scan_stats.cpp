@@ -204,7 +204,7 @@ std::string formatRunSummary(const RunSummary& s)
   std::snprintf(buf, sizeof(buf), "| Sensor time / processing time | %.1f s / %.2f s (%.1fx real time) |\n",
                 s.duration, s.wall_time, s.wall_time > 0 ? s.duration / s.wall_time : 0.0);
   out << buf;
-  std::snprintf(buf, sizeof(buf), "| Map memory (grid, sums, per-node contributions) | %.1f MiB |\n",
+  std::snprintf(buf, sizeof(buf), "| Map memory (grid, sums, nodes' scans) | %.1f MiB |\n",
                 s.map_bytes / 1048576.0);
   out << buf;
   out << timeLine("scan matching", s.matching) << timeLine("local tracking", s.tracking)
