@@ -48,6 +48,7 @@ Scan scanFromCheckedObservation(const mrpt::obs::CObservation2DRangeScan& obs, d
   s.beam_count = n;
   s.aperture = obs.aperture;
   s.max_range = obs.maxRange;
+  s.right_to_left = obs.rightToLeft;
   s.angles.reserve(n);
   s.ranges.reserve(n);
   s.points.reserve(n);

@@ -40,6 +40,7 @@ struct Scan
   size_t beam_count = 0;  ///< rays in the original observation, valid or not
   double aperture = 0;    ///< field of view [rad]
   double max_range = 0;   ///< sensor maximum range [m]
+  bool right_to_left = true;  ///< the observation's ray order (beamAngle)
   RayRejections rejected;
 
   size_t size() const { return ranges.size(); }
