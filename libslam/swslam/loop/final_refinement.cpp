@@ -80,14 +80,17 @@ LoopCheck verifyRefinementPair(const graph::PoseGraph& graph, const LoopNode& ol
   return c;
 }
 
-std::vector<LoopCheck> refinementChecks(const graph::PoseGraph& graph,
-                                        const std::function<LoopNode(size_t)>& node,
-                                        const FinalRefinementParams& p, const plicp::PlicpParams& plicp)
+RefinementEdges refinementEdges(const graph::PoseGraph& graph, const std::function<LoopNode(size_t)>& node,
+                                const FinalRefinementParams& p, const plicp::PlicpParams& plicp)
 {
-  std::vector<LoopCheck> checks;
+  RefinementEdges found;
   for (const auto& [i, j] : unlinkedClosePairs(graph, p.radius, static_cast<size_t>(p.max_pairs_per_node)))
-    checks.push_back(verifyRefinementPair(graph, node(i), node(j), p, plicp));
-  return checks;
+  {
+    LoopCheck check = verifyRefinementPair(graph, node(i), node(j), p, plicp);
+    found.pairs++;
+    if (check.edge) found.edges.push_back(std::move(*check.edge));
+  }
+  return found;
 }
 
 }  // namespace swslam::loop

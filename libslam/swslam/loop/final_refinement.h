@@ -34,10 +34,16 @@ std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const graph::PoseGraph
 LoopCheck verifyRefinementPair(const graph::PoseGraph& graph, const LoopNode& older, const LoopNode& newer,
                                const FinalRefinementParams& p, const plicp::PlicpParams& plicp);
 
+/** What one pass of the refinement found: how many pairs it matched and the edges accepted. */
+struct RefinementEdges
+{
+  size_t pairs = 0;
+  std::vector<graph::Constraint> edges;  ///< kind Loop, older -> newer, in pair order
+};
+
 /** unlinkedClosePairs() then verifyRefinementPair() on each; `node(id)` gives a LoopNode.
- * Returns every check; the accepted ones carry an edge (kind Loop, older -> newer). */
-std::vector<LoopCheck> refinementChecks(const graph::PoseGraph& graph,
-                                        const std::function<LoopNode(size_t)>& node,
-                                        const FinalRefinementParams& p, const plicp::PlicpParams& plicp);
+ * Keeps only the accepted edges (a long run matches tens of thousands of pairs). */
+RefinementEdges refinementEdges(const graph::PoseGraph& graph, const std::function<LoopNode(size_t)>& node,
+                                const FinalRefinementParams& p, const plicp::PlicpParams& plicp);
 
 }  // namespace swslam::loop

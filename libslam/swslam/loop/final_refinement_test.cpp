@@ -81,22 +81,23 @@ TEST(FinalRefinement, ARevisitGetsAnEdgeAndUnrelatedScansDoNot)
 {
   const Scene s(CPose2D(0.05, -0.04, 0.5 * kDeg), 21);
   const FinalRefinementParams p;  // radius 3 m: pairs (0, 1), (0, 2), (1, 2)
-  const auto checks = refinementChecks(s.graph, s.node(), p, plicp::PlicpParams());
-  ASSERT_EQ(checks.size(), 3u);
-  EXPECT_EQ(checks[0].verdict, Verdict::Accepted);
-  ASSERT_TRUE(checks[0].edge.has_value());
-  const LoopCheck& c = checks[0];
-  EXPECT_EQ(c.edge->from, 0u);
-  EXPECT_EQ(c.edge->to, 1u);
-  EXPECT_EQ(c.edge->kind, graph::EdgeKind::Loop);
-  const CPose2D err = c.edge->z - (s.b - s.a);
+  const auto found = refinementEdges(s.graph, s.node(), p, plicp::PlicpParams());
+  EXPECT_EQ(found.pairs, 3u);
+  ASSERT_EQ(found.edges.size(), 1u);
+  const graph::Constraint& e = found.edges[0];
+  EXPECT_EQ(e.from, 0u);
+  EXPECT_EQ(e.to, 1u);
+  EXPECT_EQ(e.kind, graph::EdgeKind::Loop);
+  const CPose2D err = e.z - (s.b - s.a);
   EXPECT_LT(err.norm(), 0.02);
   EXPECT_LT(std::abs(mrpt::math::wrapToPi(err.phi())), 0.5 * kDeg);
-  for (size_t k = 1; k < 3; k++)
+  // The pairs with the unrelated scan 2: checked and rejected.
+  for (size_t older : {0u, 1u})
   {
-    EXPECT_EQ(checks[k].to, 2u);
-    EXPECT_NE(checks[k].verdict, Verdict::Accepted) << k << " d2 " << checks[k].mahalanobis2;
-    EXPECT_FALSE(checks[k].edge.has_value());
+    const LoopCheck c = verifyRefinementPair(s.graph, s.nodes.at(older), s.nodes.at(2), p, plicp::PlicpParams());
+    EXPECT_EQ(c.to, 2u);
+    EXPECT_NE(c.verdict, Verdict::Accepted) << older << " d2 " << c.mahalanobis2;
+    EXPECT_FALSE(c.edge.has_value());
   }
 }
 

@@ -19,6 +19,7 @@ GraphModule::GraphModule(const graph::GraphOptimizerParams& graph, const loop::L
       loop_params_(loops),
       plicp_params_(plicp),
       search_params_(search),
+      scans_(plicp),
       schedule_(graph.full_optimization_interval),
       corroboration_(loops)
 {
@@ -57,9 +58,11 @@ GraphStep GraphModule::addNode(const NewNode& node)
     graph_.addNode(id, pose);
     for (const graph::Constraint& e : node.edges) addEdge(e, step);
   }
+  if (!node.keyframe.scan)
+    throw std::logic_error("graph: node " + std::to_string(id) + " arrived without its scan");
+  scans_.add(id, node.keyframe.scan);
   loop::LoopNode ln;
   ln.id = id;
-  ln.scan = node.keyframe.scan;
   ln.path_length = 0;
   if (!nodes_.empty())
   {
@@ -80,7 +83,7 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
   if (!loop_params_.enabled) return 0;
   size_t correcting = 0;
   const auto checks = loop::checkLoops(
-      graph_, nodes_.at(id), [this](size_t n) { return nodes_.at(n); }, loop_params_, plicp_params_,
+      graph_, loopNode(id), [this](size_t n) { return loopNode(n); }, loop_params_, plicp_params_,
       search_params_);
   std::vector<graph::Constraint> verified;
   for (const loop::LoopCheck& check : checks)
@@ -144,6 +147,13 @@ graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph
 }
 }  // namespace
 
+loop::LoopNode GraphModule::loopNode(size_t n) const
+{
+  loop::LoopNode ln = nodes_.at(n);
+  ln.scan = scans_.get(n);
+  return ln;
+}
+
 void GraphModule::optimize(bool full, GraphStep& step)
 {
   step.full = full;
@@ -176,20 +186,19 @@ GraphStep GraphModule::refineAll(size_t scan, const loop::FinalRefinementParams&
   if (!p.enabled || nodes_.empty()) return step;
   for (int pass = 0; pass < p.passes; ++pass)
   {
-    const auto checks = loop::refinementChecks(
-        graph_, [this](size_t n) { return nodes_.at(n); }, p, plicp_params_);
+    const auto found = loop::refinementEdges(
+        graph_, [this](size_t n) { return loopNode(n); }, p, plicp_params_);
     size_t added = 0;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      for (const loop::LoopCheck& check : checks)
+      for (const graph::Constraint& edge : found.edges)
       {
-        if (!check.edge) continue;
         const size_t before = step.edges_rejected;
-        addEdge(*check.edge, step);
+        addEdge(edge, step);
         added += step.edges_rejected == before;
       }
     }
-    step.pairs_refined += checks.size();
+    step.pairs_refined += found.pairs;
     step.refinement_edges += added;
     if (added == 0) break;
     schedule_.ranFull(nodes_.size() - 1);

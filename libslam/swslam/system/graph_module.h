@@ -14,6 +14,7 @@
 #include <swslam/loop/closer.h>
 #include <swslam/loop/corroboration.h>
 #include <swslam/loop/final_refinement_params.h>
+#include <swslam/plicp/reference_store.h>
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
 
@@ -70,12 +71,15 @@ class GraphModule
    * for a full optimization (loopCorrectsGraph). */
   size_t closeLoops(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
+  /** Node `n` for loop closure, with its scan (rebuilt by the store if not kept). */
+  loop::LoopNode loopNode(size_t n) const;
 
   const graph::GraphOptimizerParams graph_params_;
   const loop::LoopClosureParams loop_params_;
   const plicp::PlicpParams plicp_params_;
   const std::optional<correlative::CorrelativeParams> search_params_;
-  std::vector<loop::LoopNode> nodes_;  ///< by node id; only the owning thread
+  std::vector<loop::LoopNode> nodes_;  ///< by node id, without scans (in scans_); only the owning thread
+  plicp::ReferenceStore scans_;        ///< the nodes' scans
   mutable std::mutex mutex_;
   graph::PoseGraph graph_;    ///< guarded by mutex_ for readers; written by the owning thread
   size_t loops_ = 0;   ///< guarded by mutex_

@@ -1,6 +1,7 @@
 #pragma once
 // A graph node made by tracking: its pose, and the forms of its scan that later scans match
-// against.
+// against. Tracking matches only its last keyframes again (LocalTracker::kept()); an older
+// keyframe holds no scan (the graph module keeps every node's scan, compact).
 
 #include <swslam/plicp/plicp.h>
 #include <swslam/tracking/ambiguity.h>
@@ -17,8 +18,8 @@ struct Keyframe
 {
   size_t id = 0;
   mrpt::poses::CPose2D pose;  ///< vehicle pose in the map frame (updated by the optimizer)
-  std::shared_ptr<const plicp::ReferenceScan> scan;
-  std::shared_ptr<const FacingNormals> facing;  ///< of scan's points (tracking/ambiguity.h)
+  std::shared_ptr<const plicp::ReferenceScan> scan;  ///< null once the keyframe is not kept
+  std::shared_ptr<const FacingNormals> facing;  ///< of scan's points (tracking/ambiguity.h); the same
   mrpt::poses::CPose2D sensor_pose;  ///< sensor mounting on the vehicle
   mrpt::Clock::time_point timestamp;
 };

@@ -7,6 +7,7 @@
 
 #include <mrpt/system/datetime.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -159,8 +160,20 @@ Keyframe& LocalTracker::addKeyframe(const PreparedScan& scan, const CPose2D& pos
   kf.sensor_pose = scan.scan().sensor_pose;
   kf.timestamp = scan.scan().timestamp;
   keyframes_.push_back(std::move(kf));
+  // Memory grows with the keyframes' poses, not with their scans.
+  if (keyframes_.size() > kept())
+  {
+    Keyframe& old = keyframes_[keyframes_.size() - 1 - kept()];
+    old.scan.reset();
+    old.facing.reset();
+  }
   submap_ = std::make_unique<Submap>(keyframes_.back().scan, [this] { return submapRays(); });
   return keyframes_.back();
+}
+
+size_t LocalTracker::kept() const
+{
+  return static_cast<size_t>(std::max(tracking_.dense_max_index_gap + 1, tracking_.submap_keyframes));
 }
 
 std::vector<correlative::Ray> LocalTracker::submapRays() const

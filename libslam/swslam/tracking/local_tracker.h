@@ -80,6 +80,9 @@ class LocalTracker
   void setKeyframePose(size_t id, const mrpt::poses::CPose2D& pose);
 
   const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+  /** How many of the last keyframes keep their scan: those later scans are matched against
+   * (the submap's, and the dense neighbours' within dense_max_index_gap of a new node). */
+  size_t kept() const;
 
  private:
   /** The prediction of the next scan: its vehicle pose relative to the last keyframe, and what
