@@ -169,6 +169,9 @@ Ros1BagLayout readRos1BagLayout(const std::string& path)
   const uint64_t index_pos = field(head, "index_pos", 8, headFail);
   const uint64_t connections = field(head, "conn_count", 4, headFail);
   const uint64_t chunk_count = field(head, "chunk_count", 4, headFail);
+  if (const auto e = head.fields.find("encryptor"); e != head.fields.end() && e->second != "rosbag/NoEncryptor")
+    throw std::runtime_error("bag '" + path + "' is encrypted (" + printable(e->second) +
+                             "): this program reads unencrypted bags (`rosbag decrypt` writes one)");
   if (index_pos == 0)
     throw std::runtime_error("bag '" + path + "' has no index: its recording was cut short (`rosbag reindex` "
                              "rebuilds the index)");

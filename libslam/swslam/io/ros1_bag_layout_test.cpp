@@ -210,3 +210,25 @@ TEST(Ros1BagLayout, TheIndexIsChecked)
   EXPECT_NE(e.find("past its end at byte"), std::string::npos) << e;
   EXPECT_NE(e.find("a truncated bag has lost its index"), std::string::npos) << e;
 }
+
+TEST(Ros1BagLayout, AnEncryptedBagIsRefused)
+{
+  // librosbag would ask GnuPG for the key. The file header with one field more, its padding
+  // one field shorter.
+  const std::string path = writeBag("encrypted", rosbag::compression::Uncompressed);
+  const std::string e = errorOf([&] {
+    readRos1BagLayout(damaged(path, "encryptor", [](std::string& b) {
+      const std::string field = "encryptor=rosbag/AesCbcEncryptor";
+      std::string bytes(4, '\0');
+      putU32(bytes, 0, uint32_t(field.size()));
+      bytes += field;
+      const uint32_t header_len = getU32(b, 13), data_len = getU32(b, 13 + 4 + header_len);
+      b.insert(13 + 4 + header_len, bytes);
+      putU32(b, 13, header_len + uint32_t(bytes.size()));
+      putU32(b, 13 + 4 + header_len + bytes.size(), data_len - uint32_t(bytes.size()));
+      b.erase(13 + 8 + header_len + bytes.size(), bytes.size());  // from the padding
+    }));
+  });
+  EXPECT_NE(e.find("is encrypted (rosbag/AesCbcEncryptor): this program reads unencrypted bags"), std::string::npos)
+      << e;
+}
