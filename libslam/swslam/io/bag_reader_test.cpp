@@ -572,3 +572,22 @@ TEST(BagReader, AFlippedBitInTheFileHeaderIsNamedAsDamageWithoutALineFromTheLibr
     }
   EXPECT_GT(named, 8 * (8 + header_len) / 2);
 }
+
+TEST(BagReader, ARawlogsFanComesBackToTheBit)
+{
+  // A LaserScan holds its angles as float32: the aperture rebuilt from angle_increment x (n - 1)
+  // was off in its last bits, and a symmetric fan's middle by as much, which turned the scan by
+  // 1e-8 rad: the bag run's trajectory differed from the rawlog run's (by micrometres).
+  for (const auto& [rays, degrees] : {std::pair{1081, 270.0}, std::pair{181, 180.0}, std::pair{361, 240.0}})
+  {
+    CObservation2DRangeScan scan;
+    scan.aperture = static_cast<float>(degrees * M_PI / 180);
+    scan.resizeScan(rays);
+    for (int i = 0; i < rays; i++) scan.setScanRange(i, 1.0f + 0.001f * i), scan.setScanRangeValidity(i, true);
+    scan.maxRange = 30;
+    scan.sensorPose = mrpt::poses::CPose3D(0.4, 0, 0.5, 0, 0, 0);
+    const CObservation2DRangeScan back = scanFromRos(scanToRos(scan, "laser"), "/scan", scan.sensorPose);
+    EXPECT_EQ(back.aperture, scan.aperture) << rays;
+    EXPECT_EQ(back.sensorPose.yaw(), 0.0) << rays;
+  }
+}
