@@ -27,10 +27,6 @@ namespace swslam::io
  * message (64 MiB, BagReader's bound); a larger stated size is damage. */
 constexpr uint32_t kMaxBagChunkBytes = 256u << 20;
 
-/** [bytes] The longest record header (16 MiB); a connection's message definition, the longest
- * field rosbag writes, has a few KiB. */
-constexpr uint32_t kMaxBagHeaderBytes = 16u << 20;
-
 struct Ros1Chunk
 {
   uint64_t pos = 0;       ///< byte of its record in the file
