@@ -8,7 +8,7 @@
 #
 # Usage: scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]
 #   harnesses (tests/fuzz/<name>_fuzz.cpp): rawlog_reader carmen_line carmen_log carmen2rawlog
-#   graph_io tum_io relations_io ini_config stats_csv ros2_bag cdr_messages (default: all)
+#   graph_io tum_io relations_io ini_config stats_csv ros1_bag ros2_bag cdr_messages (default: all)
 # Environment: FUZZ_RSS_MB / FUZZ_MALLOC_MB (2048), FUZZ_TIMEOUT (10 s per input; rawlog_reader
 #   at least 30 s),
 #   FUZZ_FORK=1 (go on after a crash, below), FUZZ_JOBS (build parallelism, default nproc),
@@ -22,8 +22,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-all=(rawlog_reader carmen_line carmen_log carmen2rawlog graph_io tum_io relations_io ini_config stats_csv ros2_bag
-  cdr_messages)
+all=(rawlog_reader carmen_line carmen_log carmen2rawlog graph_io tum_io relations_io ini_config stats_csv ros1_bag
+  ros2_bag cdr_messages)
 seconds=${1:-600}
 [[ $seconds =~ ^[0-9]+$ && $seconds -gt 0 ]] || { echo "fuzz: SECONDS_PER_HARNESS must be a positive integer, got '$seconds'" >&2; exit 2; }
 shift || true
@@ -77,6 +77,7 @@ fi
 
 dict_of() {
   case $1 in
+    ros1_bag) echo tests/fuzz/dicts/rosbag.dict ;;
     ros2_bag) echo tests/fuzz/dicts/mcap.dict ;;
     cdr_messages) echo tests/fuzz/dicts/cdr.dict ;;
     carmen_line | carmen_log | carmen2rawlog) echo tests/fuzz/dicts/carmen.dict ;;

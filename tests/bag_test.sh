@@ -2,7 +2,8 @@
 # ROS 1 bag input end to end: lake-short converted to a bag (swslam-rawlog2bag) gives swslam
 # the same trajectory as the rawlog (ATE against ground truth); the bag's errors are named
 # with their exit codes: an unknown topic, topics for a rawlog, a truncated bag (1, nothing
-# written), a damaged message in the middle (2, the outputs of the scans before it).
+# written), a damaged message in the middle (2, the outputs of the scans before it), record
+# lengths past the bytes left and a flipped bit in the file header (below).
 # swslam-regen-map and swslam-eval consistency read the bag as well.
 set -uo pipefail
 src=$1 bin=$2/apps
@@ -84,6 +85,56 @@ expect damaged 2 "input stopped after 1000 scans: bag '$tmp/damaged.bag': messag
 grep -q "runs past the message's" "$tmp/damaged.log" || { echo "FAIL: the damage is not said"; fail=1; }
 [[ $(grep -vc '^#' "$tmp/damaged/trajectory.tum" 2>/dev/null) -eq 1000 ]] ||
   { echo "FAIL: the damaged run's trajectory does not hold the 1000 scans before the damage"; fail=1; }
+
+# Damage librosbag trusted (it asserted in rosbag::Buffer::ensureCapacity, exit 134, nothing
+# written), in bz2 and lz4 bags: chunk 10 claims 0xFFFFFFF0 bytes uncompressed (the reading
+# stops before it, the outputs hold the scans before it) or of data (nothing read: a bag whose
+# record lengths disagree with its bytes is not opened); a flipped bit in a field length of
+# the file header is named as damage, without the library's "invalid TCPROS header" line.
+damage() {  # damage IN OUT WHAT: a chunk's size or data length, or the file header's first field length
+  /usr/bin/python3 - "$@" <<'PY'
+import struct, sys
+src, dst, what = sys.argv[1:]
+data = bytearray(open(src, 'rb').read())
+u32 = lambda at: struct.unpack_from('<I', data, at)[0]
+if what == 'header':
+    data[13 + 4 + 1] ^= 0x40  # the file header's first field: 4 bytes of length, a bit of its second byte
+else:
+    pos, chunks = 13 + 8 + u32(13) + u32(13 + 4 + u32(13)), []
+    index_pos = struct.unpack_from('<Q', data, data.index(b'index_pos=') + 10)[0]
+    while pos < index_pos:
+        header = bytes(data[pos + 4:pos + 4 + u32(pos)])
+        if b'op=\x05' in header:
+            chunks.append(pos)
+        pos += 8 + u32(pos) + u32(pos + 4 + u32(pos))
+    chunk = chunks[9]
+    at = chunk + 4 + u32(chunk) if what == 'data' else data.index(b'size=', chunk) + 5
+    struct.pack_into('<I', data, at, 0xFFFFFFF0)
+open(dst, 'wb').write(data)
+PY
+}
+for c in bz2 lz4; do
+  "$bin/swslam-rawlog2bag" -i "$log" -o "$tmp/$c.bag" --compression $c > /dev/null 2>&1 || { echo "FAIL: $c bag"; fail=1; }
+  damage "$tmp/$c.bag" "$tmp/size_$c.bag" size
+  run size_$c "$tmp/size_$c.bag"
+  expect size_$c 2 "the bag is damaged: chunk 10 of " $?
+  grep -qF "it states 4294967280 bytes uncompressed, more than the 268435456 a chunk may hold" "$tmp/size_$c.log" ||
+    { echo "FAIL: size_$c: the chunk's size is not named"; fail=1; }
+  n=$(sed -n 's/.*input stopped after \([0-9]*\) scans.*/\1/p' "$tmp/size_$c.log" | head -1)
+  [[ -n $n && $n -gt 0 && $(grep -vc '^#' "$tmp/size_$c/trajectory.tum" 2>/dev/null) -eq $n ]] ||
+    { echo "FAIL: size_$c: the trajectory does not hold the $n scans before the damaged chunk"; fail=1; }
+  damage "$tmp/$c.bag" "$tmp/data_$c.bag" data
+  run data_$c "$tmp/data_$c.bag"
+  expect data_$c 1 "(a chunk): its data states 4294967280 bytes, but " $?
+  grep -qF "is damaged: the record at byte " "$tmp/data_$c.log" || { echo "FAIL: data_$c: no record named"; fail=1; }
+  [[ ! -e $tmp/data_$c/trajectory.tum ]] || { echo "FAIL: outputs written for data_$c"; fail=1; }
+done
+damage "$bag" "$tmp/flipped.bag" header
+run flipped "$tmp/flipped.bag"
+expect flipped 1 "is damaged: its file header (the record at byte 13): a field of its header states " $?
+grep -qF "(a damaged header)" "$tmp/flipped.log" || { echo "FAIL: flipped: the damaged header is not named"; fail=1; }
+grep -q "TCPROS\\|truncated" "$tmp/flipped.log" && { echo "FAIL: flipped: a library line or truncation said"; cat "$tmp/flipped.log"; fail=1; }
+[[ ! -e $tmp/flipped/trajectory.tum ]] || { echo "FAIL: outputs written for a flipped bit"; fail=1; }
 
 [[ $fail -eq 0 ]] && echo "bag_test: OK"
 exit $fail

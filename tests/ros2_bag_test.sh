@@ -3,7 +3,8 @@
 # fixture ros2_bags): lake-short as a ROS 1 bag (swslam-rawlog2bag) and as ROS 2 bags of the
 # same messages (zstd, lz4, uncompressed and unchunked MCAP, big-endian CDR, .db3, .db3 with
 # zstd per message, .db3 compressed whole) give swslam the same trajectory, byte for byte in deterministic mode, and
-# say what they read; swslam-eval consistency reads one too. Damaged and foreign ROS 2 inputs
+# say what they read; ROS 2 bags swslam-rawlog2bag wrote, of lake-short and of a CARMEN log, and
+# the npm writers' of the CARMEN log give the rawlog's trajectory byte for byte; swslam-eval consistency reads one too. Damaged and foreign ROS 2 inputs
 # are named with their exit codes.
 set -uo pipefail
 src=$1 bin=$2/apps bags=$2/tests/ros2-bags
@@ -29,6 +30,32 @@ for b in zstd.mcap be.mcap unchunked.mcap lz4 db3 db3-zstd db3-file-zstd; do
     echo "FAIL: $b: its trajectory differs from the ROS 1 bag's"; fail=1
   fi
 done
+
+# The figure: lake-short and a CARMEN log (tests/data/raw-room.clf.gz through
+# swslam-carmen2rawlog) as ROS 2 bags written both ways, by the npm writers (from the ROS 1 bag)
+# and by swslam-rawlog2bag (ours/: a rosbag2 folder, a single .mcap), give the rawlog's
+# trajectory byte for byte.
+same_as() {  # same_as REFERENCE NAME INPUT: swslam on INPUT gives REFERENCE's trajectory
+  local reference=$1 name=$2 input=$3
+  run "$name" "$input" || { echo "FAIL: swslam on $input exited $?"; cat "$tmp/$name.log"; fail=1; return; }
+  if cmp -s "$tmp/$reference/trajectory.tum" "$tmp/$name/trajectory.tum"; then
+    echo "$name: the rawlog's trajectory, byte for byte ($(grep -vc '^#' "$tmp/$name/trajectory.tum") poses)"
+  else
+    echo "FAIL: $name: its trajectory differs from the rawlog's"; fail=1
+  fi
+}
+run rawlog "$src/datasets/lake-short/lake-short.rawlog" || { echo "FAIL: swslam on lake-short.rawlog"; fail=1; }
+same_as rawlog lake-ros1 "$bags/lake-short.bag"
+same_as rawlog lake-npm-zstd "$bags/lake-short/zstd.mcap"
+same_as rawlog lake-npm-db3 "$bags/lake-short/db3"
+same_as rawlog lake-ours "$bags/ours/lake-short"
+same_as rawlog lake-ours-mcap "$bags/ours/lake-short.mcap"
+run carmen-rawlog "$bags/raw-room.rawlog" || { echo "FAIL: swslam on raw-room.rawlog"; fail=1; }
+same_as carmen-rawlog carmen-ros1 "$bags/raw-room.bag"
+same_as carmen-rawlog carmen-npm-zstd "$bags/carmen/zstd.mcap"
+same_as carmen-rawlog carmen-npm-lz4 "$bags/carmen/lz4"
+same_as carmen-rawlog carmen-npm-db3 "$bags/carmen/db3"
+same_as carmen-rawlog carmen-ours "$bags/ours/raw-room"
 
 # swslam-eval consistency reads a ROS 2 bag's scans as the ROS 1 bag's.
 consistency() { "$bin/swslam-eval" consistency "$tmp/ros1/trajectory.tum" "$1" -c "$cfg" --stride 40 --sensor-label /scan 2>&1 | tail -1; }

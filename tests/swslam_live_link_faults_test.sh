@@ -7,7 +7,8 @@
 #   for a reply's echo for as long as bytes come).
 # - The sensor stopped (SIGSTOP) for 2.5 s, then continued: a stall, and mapping resumes.
 # - No scan at all (only garbage, or nothing listening): exit 2, the sensor named as never
-#   answering with the retry policy, and no empty outputs.
+#   answering with the retry policy, and no empty outputs; a previous run's outputs in the
+#   folder are left as they were.
 # Usage: swslam_live_link_faults_test.sh SOURCE_DIR BINARY_DIR
 set -uo pipefail
 src=$1 build=$2
@@ -123,6 +124,20 @@ kill "$emu_pid"; wait "$emu_pid" 2> /dev/null; emu_pid=  # its port, now closed
 start_live --duration 2
 wait_live 8
 check_never_answered
+
+# The same into the folder of a previous run: it was cleared before the sensor was tried; now
+# its outputs and recording are left as they were.
+name=nobody_kept
+cp "$tmp/nobody.ini" "$tmp/$name.ini"  # the same closed port
+mkdir -p "$tmp/$name"
+for f in trajectory.tum summary.md recording.rawlog; do echo "previous $f" > "$tmp/$name/$f"; done
+(cd "$tmp/$name" && md5sum trajectory.tum summary.md recording.rawlog) > "$tmp/$name.md5"
+start_live --duration 2
+wait_live 8
+((code == 2)) || bad "exit $code, not 2"
+grep -q "never answered" "$tmp/$name.err" || bad "not said: $(cat "$tmp/$name.err")"
+(cd "$tmp/$name" && md5sum -c --quiet "$tmp/$name.md5") || bad "the previous run's outputs changed"
+[[ $(find "$tmp/$name" -type f ! -name .swslam.lock | wc -l) -eq 3 ]] || bad "a file was added or removed"
 
 # The sensor process stopped for 2.5 s (its connection open, silent), then continued.
 name=stopped

@@ -1,7 +1,7 @@
 // Harness: the CDR decoders of the three ROS 2 messages (io/ros2_messages.h) over any bytes:
 // the first byte picks the type (0 LaserScan, 1 Odometry, 2 TFMessage, modulo 3), the rest is
 // the message. Documented error path: CdrError. Promises checked: a scan has at most
-// sensor::kMaxScanRays rays; a message decoded, written again (ros2_test_writers.h) in either
+// sensor::kMaxScanRays rays; a message decoded, written again (ros2_messages.h) in either
 // byte order and decoded, is written to the same bytes (nothing read is lost or invented).
 // Seeds: the messages tests/ros2/make-bags.mjs writes, prefixed by their type byte.
 
@@ -9,7 +9,6 @@
 
 #include <swslam/io/cdr_reader.h>
 #include <swslam/io/ros2_messages.h>
-#include <swslam/io/ros2_test_writers.h>
 #include <swslam/sensor/input_bounds.h>
 
 namespace
@@ -51,10 +50,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       catch (const CdrError&)
       {
       }
-      roundTrip<sensor_msgs::LaserScan>(data + 1, size - 1, laserScanFromCdr, testing::laserScanCdr);
+      roundTrip<sensor_msgs::LaserScan>(data + 1, size - 1, laserScanFromCdr, laserScanCdr);
       break;
-    case 1: roundTrip<nav_msgs::Odometry>(data + 1, size - 1, odometryFromCdr, testing::odometryCdr); break;
-    default: roundTrip<tf2_msgs::TFMessage>(data + 1, size - 1, tfMessageFromCdr, testing::tfMessageCdr); break;
+    case 1: roundTrip<nav_msgs::Odometry>(data + 1, size - 1, odometryFromCdr, odometryCdr); break;
+    default: roundTrip<tf2_msgs::TFMessage>(data + 1, size - 1, tfMessageFromCdr, tfMessageCdr); break;
   }
   return 0;
 }

@@ -18,7 +18,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <ostream>
@@ -58,6 +57,7 @@ struct Opened
   std::unique_ptr<io::HokuyoLink> link;
   std::unique_ptr<io::RawlogRecorder> recorder;
   std::optional<OutputFolder> folder;
+  bool started = false;  ///< a scan came: the previous run's outputs are cleared
 };
 
 /** When the run is over: a signal, or the duration since t0. */
@@ -97,17 +97,31 @@ bool open(const LiveRunOptions& opts, const Deadline& deadline, Opened& in, std:
     lo.stop = [&deadline] { return deadline.over(steady_clock::now()); };  // a poll stuck in garbage returns
     in.link = std::make_unique<io::HokuyoLink>(sensor_cfg, opts.sensor_section, lo,
                                                [&err](const std::string& m) { err << "\nswslam-live: " << m << "\n"; });
-    // The recording replaces a previous one from here on, so do the other outputs; a run that
-    // failed before (a bad sensor section) leaves them as they were.
-    in.folder->clearPreviousRun(runOutputFiles());
-    in.recorder = std::make_unique<io::RawlogRecorder>(
-        opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
+    // The previous run's outputs (and recording) are replaced from the first scan on
+    // (startRecording): a sensor that never answers leaves them as they were.
     return true;
   }
   catch (const std::exception& e)
   {
     err << "swslam-live: " << e.what() << "\n";
     return false;
+  }
+}
+
+/** At the first scan: the previous run's outputs cleared, and the recording started, which
+ * replaces a previous one (a recording that cannot be made is said, and mapping goes on). */
+void startRecording(const LiveRunOptions& opts, Opened& in, std::ostream& err)
+{
+  in.started = true;
+  in.folder->clearPreviousRun(runOutputFiles());
+  try
+  {
+    in.recorder = std::make_unique<io::RawlogRecorder>(
+        opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam-live: " << e.what() << "; mapping goes on without recording\n";
   }
 }
 
@@ -128,9 +142,10 @@ void run(const LiveRunOptions& opts, const Deadline& deadline, Opened& in, syste
     if (deadline.over(now)) break;
     if (auto scan = in.link->poll())
     {
+      if (!in.started) startRecording(opts, in, err);
       try
       {
-        in.recorder->write(*scan);
+        if (in.recorder) in.recorder->write(*scan);
       }
       catch (const std::exception& e)
       {
@@ -192,14 +207,7 @@ int runLive(const LiveRunOptions& opts, std::ostream& out, std::ostream& err)
         << static_cast<long>(duration<double>(steady_clock::now() - deadline.t0).count()) << " s ("
         << ls.attempts << " connection attempt(s), " << ls.errors << " failed; " << retries
         << "): is it powered, and at that address?; nothing written\n";
-    if (in.recorder)
-    {
-      const std::string recording = in.recorder->path();
-      in.recorder.reset();
-      std::error_code ec;
-      std::filesystem::remove(recording, ec);
-    }
-    out << "# nothing written in " << opts.output << "/\n";
+    out << "# nothing written in " << opts.output << "/ (a previous run's outputs are kept)\n";
     return kExitInputError;
   }
   if (!slam.error().empty())

@@ -5,6 +5,7 @@
 
 #include <swslam/app/live_run.h>
 #include <swslam/app/offline_run.h>
+#include <swslam/app/output_folder.h>
 #include <swslam/eval/report.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/sim/scenario.h>
@@ -214,5 +215,33 @@ TEST(LiveRun, ABadSensorSectionLeavesThePreviousRunsOutputs)
   EXPECT_EQ(runLive(o, out, err), kExitUsage);
   EXPECT_NE(err.str().find("CSickLaserUSB"), std::string::npos) << err.str();
   EXPECT_TRUE(std::filesystem::exists(o.output + "/summary.md")) << "the previous outputs were removed";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(LiveRun, ASensorThatNeverAnswersLeavesThePreviousRunsOutputsAsTheyWere)
+{
+  // The previous run's outputs (and recording) were cleared before the sensor was tried.
+  const std::string dir = test::tempDir("live_never_answered");
+  LiveRunOptions o = liveOptions(dir, 1, 1);  // port 1: nothing listens
+  std::filesystem::create_directories(o.output);
+  const std::vector<std::string> previous{"summary.md", "trajectory.tum", "recording.rawlog", "map.png"};
+  for (const std::string& f : previous) std::ofstream(o.output + "/" + f) << "a previous run's " << f << "\n";
+  std::ostringstream out, err;
+  EXPECT_EQ(runLive(o, out, err), kExitInputError);
+  EXPECT_NE(err.str().find("the sensor never answered"), std::string::npos) << err.str();
+  EXPECT_NE(out.str().find("nothing written in " + o.output + "/ (a previous run's outputs are kept)"),
+            std::string::npos)
+      << out.str();
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(o.output))
+    files += e.path().filename() != OutputFolder::kLockFile;
+  EXPECT_EQ(files, previous.size()) << "a file was added or removed";
+  for (const std::string& f : previous)
+  {
+    std::ifstream in(o.output + "/" + f);
+    std::string text;
+    std::getline(in, text);
+    EXPECT_EQ(text, "a previous run's " + f);
+  }
   std::filesystem::remove_all(dir);
 }

@@ -1,5 +1,6 @@
 #include <swslam/io/bag_reader.h>
 
+#include <swslam/io/ros1_bag_layout.h>
 #include <swslam/io/ros_conversion.h>
 #include <swslam/sensor/input_bounds.h>
 
@@ -80,6 +81,31 @@ struct BagReader::Bag
   rosbag::Bag file;
   std::unique_ptr<rosbag::View> view;  ///< the chosen topics, in time order
   rosbag::View::iterator it;
+  Ros1BagLayout layout;  ///< checked before librosbag opened the file
+  std::ifstream raw;     ///< the file, to check a chunk before librosbag reads it
+  std::vector<std::optional<std::string>> chunk_problems;  ///< by chunk, once checked
+
+  /** Why a message at `time` cannot be read safely ("" if it can): a damaged chunk whose time
+   * range holds it (a message lies within its chunk's range: readRos1BagLayout checks it). */
+  std::string problemAt(const ros::Time& time)
+  {
+    const uint64_t t = time.toNSec();
+    for (size_t i = 0; i < layout.chunks.size(); i++)
+    {
+      const Ros1Chunk& c = layout.chunks[i];
+      if (t < c.start_ns || t > c.end_ns) continue;
+      if (!chunk_problems[i]) chunk_problems[i] = ros1ChunkProblem(raw, c);
+      if (!chunk_problems[i]->empty())
+        return "the bag is damaged: chunk " + std::to_string(i + 1) + " of " + std::to_string(layout.chunks.size()) +
+               " (byte " + std::to_string(c.pos) + ", " + c.compression + "): " + *chunk_problems[i];
+    }
+    return "";
+  }
+  /** Throws std::runtime_error if the message `m` cannot be read safely (problemAt). */
+  void check(const rosbag::MessageInstance& m)
+  {
+    if (const std::string problem = problemAt(m.getTime()); !problem.empty()) throw std::runtime_error(problem);
+  }
 };
 
 BagReader::BagReader(const std::string& path, const BagReaderOptions& opts)
@@ -88,6 +114,10 @@ BagReader::BagReader(const std::string& path, const BagReaderOptions& opts)
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot open bag '" + path + "': no such file");
   if (!startsWithBagMagic(path))
     throw std::runtime_error("'" + path + "' is not a ROS bag: it does not start with \"#ROSBAG\"");
+  // librosbag trusts every length in the file: they are checked first.
+  bag_->layout = readRos1BagLayout(path);
+  bag_->chunk_problems.resize(bag_->layout.chunks.size());
+  bag_->raw.open(path, std::ios::binary);
   try
   {
     bag_->file.open(path, rosbag::bagmode::Read);
@@ -139,6 +169,7 @@ void BagReader::findSensorPose()
   auto first = [&](const std::string& topic) {
     rosbag::View v(bag_->file, rosbag::TopicQuery(topic));
     if (v.begin() == v.end()) throw std::runtime_error("topic '" + topic + "' has no message");
+    bag_->check(*v.begin());
     return *v.begin();
   };
   std::string scan_frame, odom_child;
@@ -164,6 +195,7 @@ void BagReader::findSensorPose()
     {
       for (const rosbag::MessageInstance& m : v)
       {
+        bag_->check(m);
         const auto msg = decode<tf2_msgs::TFMessage>(m, tfMessageLayoutProblem);
         transforms.insert(transforms.end(), msg.transforms.begin(), msg.transforms.end());
       }
@@ -192,6 +224,7 @@ void BagReader::readSameTime()
       at = here.str();
       if (time && m.getTime() != *time) break;
       time = m.getTime();
+      bag_->check(m);
       // A message without a header stamp (some drivers leave it zero) is stamped with its bag time.
       if (m.getTopic() == scan_topic_)
       {

@@ -4,7 +4,8 @@
 // the topic), the nav_msgs/Odometry messages of one topic CObservationOdometry, in the bag's
 // time order; librosbag holds one chunk of the file in memory at a time. The scanner's pose on
 // the vehicle is the /tf_static transform from the odometry's child frame (base_link without
-// odometry) to the scans' frame, else identity.
+// odometry) to the scans' frame, else identity. Each chunk is checked before librosbag reads a
+// message of it (ros1_bag_layout.h); a damaged one ends the reading as a damaged message does.
 
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose3D.h>
@@ -106,7 +107,8 @@ class BagReader : public BagReaderBase
   static constexpr const char* kScanType = "sensor_msgs/LaserScan";
 
   /** Opens the bag and picks its topics. Throws std::runtime_error naming the problem if the
-   * bag cannot be opened (missing, not a bag, truncated: its index is at its end), if a topic
+   * bag cannot be opened (missing, not a bag, truncated: its index is at its end; a record
+   * outside the chunks damaged, ros1_bag_layout.h: librosbag reads none unchecked), if a topic
    * asked for is not in it or not of the right type, if a topic is not asked for and the
    * bag has several of that type, or if its /tf_static mounts the scanner beyond the bound of
    * sensor/input_bounds.h. */

@@ -1,6 +1,7 @@
 // Reading ROS 1 bags: scans and odometry in time order, topic choice, the sensor pose from
 // /tf_static, and damaged bags. The bags are written with librosbag's own writer.
 #include <swslam/io/bag_reader.h>
+#include <swslam/io/ros1_bag_layout.h>
 #include <swslam/io/ros_conversion.h>
 #include <swslam/io/scan_source.h>
 #include <swslam/sensor/input_bounds.h>
@@ -68,6 +69,7 @@ struct BagSpec
   std::vector<std::string> scan_topics{"/scan"};
   std::vector<std::string> odom_topics{"/odom"};
   std::vector<geometry_msgs::TransformStamped> tf_static;
+  rosbag::CompressionType compression = rosbag::compression::Uncompressed;
 };
 
 std::string writeBag(const std::string& name, const BagSpec& spec)
@@ -75,6 +77,7 @@ std::string writeBag(const std::string& name, const BagSpec& spec)
   const std::string path = (std::filesystem::temp_directory_path() / ("swslam_bag_" + name + ".bag")).string();
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   bag.setChunkThreshold(4096);  // many chunks: damage hits one in the middle
+  bag.setCompression(spec.compression);
   if (!spec.tf_static.empty())
   {
     tf2_msgs::TFMessage tf;
@@ -350,11 +353,10 @@ TEST(BagReader, SensorPoseFromTheStaticTransformsOfTheBaseFrame)
 
 TEST(BagReader, ATruncatedBagIsNamed)
 {
-  const std::string path = writeBag("truncated", {});
-  const auto size = std::filesystem::file_size(path);
-  for (const double keep : {0.6, 0.99})
+  for (const double keep : {0.6, 0.99})  // cut in the chunks, cut in the index
   {
-    std::filesystem::resize_file(path, static_cast<uintmax_t>(size * keep));
+    const std::string path = writeBag("truncated", {});
+    std::filesystem::resize_file(path, static_cast<uintmax_t>(std::filesystem::file_size(path) * keep));
     const std::string e = errorOf([&] { BagReader r(path, {}); });
     EXPECT_NE(e.find("bag '" + path + "'"), std::string::npos) << e;
     EXPECT_NE(e.find("rosbag reindex"), std::string::npos) << e;
@@ -474,4 +476,118 @@ TEST(BagReader, AScanWithoutHeaderStampTakesItsBagTime)
   const ReadResult got = readAll(r);
   ASSERT_EQ(got.scans.size(), 3u);
   EXPECT_NEAR(mrpt::Clock::toDouble(got.scans[2]->timestamp), kT0 + 0.2, 1e-6);
+}
+
+namespace
+{
+std::string fileBytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/** The bag `path` with the 4 bytes at `at(bytes)` set to `value`, written beside it. */
+std::string withU32(const std::string& path, const std::string& name, const std::function<size_t(const std::string&)>& at,
+                    uint32_t value)
+{
+  std::string bytes = fileBytes(path);
+  std::memcpy(&bytes[at(bytes)], &value, 4);
+  const std::string out = path + "." + name + ".bag";
+  std::ofstream(out, std::ios::binary) << bytes;
+  return out;
+}
+}  // namespace
+
+TEST(BagReader, AChunkStating4GiBStopsTheReadingAfterTheMessagesBeforeIt)
+{
+  // librosbag reserved the 4 GiB and asserted (exit 134, nothing written).
+  for (const auto compression : {rosbag::compression::BZ2, rosbag::compression::LZ4})
+  {
+    BagSpec spec;
+    spec.scans = 40;
+    spec.compression = compression;
+    const std::string path = writeBag("chunk4g", spec);
+    // The third chunk's header: its "size" field (uncompressed bytes).
+    const uint64_t third = readRos1BagLayout(path).chunks.at(2).pos;
+    const auto third_size = [&](const std::string& b) { return b.find("size=", third) + 5; };
+    BagReader r(withU32(path, "size", third_size, 0xFFFFFFF0), {});
+    size_t scans = 0;
+    mrpt::obs::CObservation::Ptr obs;
+    const std::string e = errorOf([&] {
+      while (r.next(obs)) scans += bool(std::dynamic_pointer_cast<CObservation2DRangeScan>(obs));
+    });
+    EXPECT_GE(scans, 2u);  // the first two chunks
+    EXPECT_LT(scans, 40u);
+    EXPECT_NE(e.find("cannot be read (/"), std::string::npos) << e;
+    EXPECT_NE(e.find("the bag is damaged: chunk 3 of "), std::string::npos) << e;
+    EXPECT_NE(e.find("it states 4294967280 bytes uncompressed, more than the 268435456 a chunk may hold"),
+              std::string::npos)
+        << e;
+  }
+}
+
+TEST(BagReader, ARecordLengthPastTheFileIsNamedBeforeLibrosbagSeesIt)
+{
+  BagSpec spec;
+  spec.compression = rosbag::compression::BZ2;
+  const std::string path = writeBag("length4g", spec);
+  const uint64_t second = readRos1BagLayout(path).chunks.at(1).pos;
+  const auto second_chunk_data_length = [&](const std::string& b) {
+    uint32_t header_len;
+    std::memcpy(&header_len, &b[second], 4);
+    return second + 4 + header_len;
+  };
+  const std::string e =
+      errorOf([&] { BagReader r(withU32(path, "length", second_chunk_data_length, 0xFFFFFFF0), {}); });
+  EXPECT_NE(e.find("is damaged: the record at byte "), std::string::npos) << e;
+  EXPECT_NE(e.find("(a chunk): its data states 4294967280 bytes, but "), std::string::npos) << e;
+}
+
+TEST(BagReader, AFlippedBitInTheFileHeaderIsNamedAsDamageWithoutALineFromTheLibrary)
+{
+  // One flip read "a truncated bag has lost its index" after the library's "Received an
+  // invalid TCPROS header". Every bit of the file header record but its padding.
+  const std::string path = writeBag("flip", {});
+  const std::string good = fileBytes(path);
+  uint32_t header_len;
+  std::memcpy(&header_len, &good[13], 4);
+  const std::string flipped = path + ".flipped.bag";
+  size_t named = 0;
+  for (size_t byte = 13; byte < 13 + 8 + header_len; byte++)
+    for (int bit = 0; bit < 8; bit++)
+    {
+      std::string bytes = good;
+      bytes[byte] = char(bytes[byte] ^ (1 << bit));
+      std::ofstream(flipped, std::ios::binary) << bytes;
+      testing::internal::CaptureStderr();
+      const std::string e = errorOf([&] {
+        BagReader r(flipped, {});
+        readAll(r);
+      });
+      const std::string said = testing::internal::GetCapturedStderr();
+      EXPECT_EQ(said, "") << "byte " << byte << " bit " << bit;
+      if (e.empty()) continue;
+      named++;
+      EXPECT_NE(e.find("damaged"), std::string::npos) << "byte " << byte << " bit " << bit << ": " << e;
+    }
+  EXPECT_GT(named, 8 * (8 + header_len) / 2);
+}
+
+TEST(BagReader, ARawlogsFanComesBackToTheBit)
+{
+  // A LaserScan holds its angles as float32: the aperture rebuilt from angle_increment x (n - 1)
+  // was off in its last bits, and a symmetric fan's middle by as much, which turned the scan by
+  // 1e-8 rad: the bag run's trajectory differed from the rawlog run's (by micrometres).
+  for (const auto& [rays, degrees] : {std::pair{1081, 270.0}, std::pair{181, 180.0}, std::pair{361, 240.0}})
+  {
+    CObservation2DRangeScan scan;
+    scan.aperture = static_cast<float>(degrees * M_PI / 180);
+    scan.resizeScan(rays);
+    for (int i = 0; i < rays; i++) scan.setScanRange(i, 1.0f + 0.001f * i), scan.setScanRangeValidity(i, true);
+    scan.maxRange = 30;
+    scan.sensorPose = mrpt::poses::CPose3D(0.4, 0, 0.5, 0, 0, 0);
+    const CObservation2DRangeScan back = scanFromRos(scanToRos(scan, "laser"), "/scan", scan.sensorPose);
+    EXPECT_EQ(back.aperture, scan.aperture) << rays;
+    EXPECT_EQ(back.sensorPose.yaw(), 0.0) << rays;
+  }
 }

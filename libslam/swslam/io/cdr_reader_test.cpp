@@ -1,20 +1,19 @@
 // The CDR cursor: both byte orders, alignment counted from the payload, every length checked.
 #include <swslam/io/cdr_reader.h>
-#include <swslam/io/ros2_test_writers.h>
+#include <swslam/io/cdr_writer.h>
 
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
 using namespace swslam::io;
-using swslam::io::testing::CdrOut;
 using swslam::test::errorOf;
 
 TEST(CdrReader, ReadsBothByteOrdersAlignedFromThePayload)
 {
   for (bool big : {false, true})
   {
-    CdrOut out(big);
+    CdrWriter out(big);
     out.put<uint32_t>(7).str("ab").put<double>(-2.5).put<float>(1.25f).put<int32_t>(-3);
     auto& b = out.bytes();
     // u32 at payload 0, the string's length at 4 and "ab\0" at 8-10, padding to 16 for the double.
@@ -40,33 +39,33 @@ TEST(CdrReader, AnythingPastTheBytesIsANamedError)
   const std::vector<uint8_t> pl{0, 3, 0, 0};
   EXPECT_NE(errorOf([&] { CdrReader(pl.data(), pl.size()); }).find("is not plain CDR"), std::string::npos);
 
-  CdrOut out(false);
+  CdrWriter out(false);
   out.put<uint32_t>(1);
   auto b = out.bytes();
   CdrReader c(b.data(), b.size());
   c.u32();
   EXPECT_EQ(errorOf([&] { c.f64(); }), "CDR byte 8 of 8: a value of 8 bytes runs past the message's end");
 
-  CdrOut s(false);
+  CdrWriter s(false);
   s.put<uint32_t>(0xFFFFFFF0u);  // a string's length far past the end
   auto sb = s.bytes();
   CdrReader cs(sb.data(), sb.size());
   EXPECT_EQ(errorOf([&] { cs.string(); }), "CDR byte 8 of 8: a string of 4294967280 bytes, but 0 are left");
 
-  CdrOut q(false);
+  CdrWriter q(false);
   q.put<uint32_t>(1000).put<uint32_t>(0);
   auto qb = q.bytes();
   CdrReader cq(qb.data(), qb.size());
   EXPECT_EQ(errorOf([&] { cq.sequenceLength(72); }),
             "CDR byte 8 of 12: a sequence of 1000 elements of at least 72 bytes, but 4 bytes are left");
 
-  CdrOut nul(false);
+  CdrWriter nul(false);
   nul.put<uint32_t>(2).put<uint8_t>('a').put<uint8_t>('b');
   auto nb = nul.bytes();
   CdrReader cn(nb.data(), nb.size());
   EXPECT_NE(errorOf([&] { cn.string(); }).find("does not end in NUL"), std::string::npos);
 
-  CdrOut extra(false);
+  CdrWriter extra(false);
   extra.put<uint32_t>(1).put<uint32_t>(2);
   auto eb = extra.bytes();
   CdrReader ce(eb.data(), eb.size());

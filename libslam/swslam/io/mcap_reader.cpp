@@ -11,17 +11,7 @@ namespace swslam::io
 {
 namespace
 {
-constexpr uint8_t kMagic[8] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};
-enum Opcode : uint8_t
-{
-  kHeader = 0x01,
-  kFooter = 0x02,
-  kSchema = 0x03,
-  kChannel = 0x04,
-  kMessage = 0x05,
-  kChunk = 0x06,
-  kDataEnd = 0x0F,
-};
+using namespace mcap;
 constexpr uint64_t kRecordPrefix = 1 + 8;  // opcode, length
 
 /** Little-endian fields of one record's body, each checked against the bytes left. */

@@ -16,6 +16,27 @@
 
 namespace swslam::io
 {
+namespace mcap
+{
+/** The file's magic, at its start and end, and the opcodes of the records (mcap_writer.h writes
+ * them too). */
+constexpr uint8_t kMagic[8] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};
+enum Opcode : uint8_t
+{
+  kHeader = 0x01,
+  kFooter = 0x02,
+  kSchema = 0x03,
+  kChannel = 0x04,
+  kMessage = 0x05,
+  kChunk = 0x06,
+  kMessageIndex = 0x07,
+  kChunkIndex = 0x08,
+  kStatistics = 0x0B,
+  kSummaryOffset = 0x0E,
+  kDataEnd = 0x0F,
+};
+}  // namespace mcap
+
 /** An MCAP file that cannot be read: "MCAP record at byte N: ..." (N its offset in the file;
  * in a chunk, also the record's offset in the uncompressed chunk). */
 class McapError : public std::runtime_error

@@ -356,3 +356,70 @@ TEST(Ros2BagReader, BadFoldersAndFilesAreNamed)
   EXPECT_NE(errorOf([&] { Ros2BagReader((dir / "bag.db3").string(), {}); }).find("it is not a rosbag2 database"),
             std::string::npos);
 }
+
+namespace
+{
+/** The messages as an .mcap file whose chunks (uncompressed) hold them out of order: the
+ * second half of the drive first, each chunk's messages reversed; cut `cut` bytes short. */
+std::string writeShuffledMcap(const std::string& name, size_t cut = 0)
+{
+  const std::vector<Msg> all = messages(false);
+  const std::vector<std::string> topics{"/tf_static", "/scan", "/odom"};
+  McapOut f;
+  f.add(McapOut::header());
+  for (uint16_t i = 0; i < topics.size(); i++)
+    f.add(McapOut::schema(i + 1, type(topics[i]))).add(McapOut::channel(i + 1, i + 1, topics[i]));
+  const auto chunk = [&](size_t from, size_t to) {
+    std::vector<uint8_t> records;
+    for (size_t i = to; i-- > from;)
+    {
+      const auto id = static_cast<uint16_t>(std::find(topics.begin(), topics.end(), all[i].topic) - topics.begin() + 1);
+      const auto r = McapOut::message(id, all[i].time.toNSec(), all[i].cdr);
+      records.insert(records.end(), r.begin(), r.end());
+    }
+    return McapOut::chunk("", records, records.size(), 0);
+  };
+  f.add(chunk(all.size() / 2, all.size())).add(chunk(0, all.size() / 2));
+  if (cut) f.bytes.resize(f.bytes.size() - cut);
+  const std::string path = temp(name + ".mcap");
+  f.write(path, cut == 0);
+  return path;
+}
+
+std::vector<double> times(Ros2BagReader& r)
+{
+  std::vector<double> out;
+  mrpt::obs::CObservation::Ptr o;
+  while (r.next(o)) out.push_back(mrpt::Clock::toDouble(o->timestamp));
+  return out;
+}
+}  // namespace
+
+TEST(Ros2BagReader, McapMessagesComeInLogTimeOrderThoughTheFileHoldsThemOtherwise)
+{
+  // As rosbag2 plays an .mcap file (by its index); they came in file order, steps back.
+  Ros2BagReader shuffled(writeShuffledMcap("shuffled"), {}), ordered(writeMcap("ordered", false), {});
+  EXPECT_EQ(shuffled.sensorPoseSource(), ordered.sensorPoseSource());
+  EXPECT_TRUE(observations(shuffled) == observations(ordered));  // every field of each, in order
+  Ros2BagReader again(writeShuffledMcap("shuffled"), {});
+  const std::vector<double> t = times(again);
+  EXPECT_EQ(t.size(), size_t(2 * kScans));
+  EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
+}
+
+TEST(Ros2BagReader, AnMcapCutShortGivesTheMessagesBeforeTheCutInLogTimeOrderThenTheDamage)
+{
+  // The second chunk (the first half of the drive) cut: the first one's messages, in order.
+  const std::string path = writeShuffledMcap("shuffled_cut", 100);
+  Ros2BagReader r(path, {});
+  std::vector<double> t;
+  mrpt::obs::CObservation::Ptr o;
+  const std::string e = errorOf([&] {
+    while (r.next(o)) t.push_back(mrpt::Clock::toDouble(o->timestamp));
+  });
+  const size_t all = messages(false).size();
+  EXPECT_EQ(t.size(), all - all / 2);  // the first chunk's: the second half of the drive
+  EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
+  EXPECT_NE(e.find("cannot be read"), std::string::npos) << e;
+  EXPECT_NE(e.find("(a truncated file?)"), std::string::npos) << e;
+}

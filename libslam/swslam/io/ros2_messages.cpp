@@ -1,6 +1,7 @@
 #include <swslam/io/ros2_messages.h>
 
 #include <swslam/io/cdr_reader.h>
+#include <swslam/io/cdr_writer.h>
 #include <swslam/sensor/input_bounds.h>
 
 namespace swslam::io
@@ -110,6 +111,45 @@ tf2_msgs::TFMessage tfMessageFromCdr(const uint8_t* data, size_t size)
   }
   c.expectEnd();
   return m;
+}
+
+std::vector<uint8_t> laserScanCdr(const sensor_msgs::LaserScan& m, bool big_endian)
+{
+  CdrWriter c(big_endian);
+  c.header(m.header);
+  for (float v : {m.angle_min, m.angle_max, m.angle_increment, m.time_increment, m.scan_time, m.range_min, m.range_max})
+    c.put<float>(v);
+  return c.floats(m.ranges).floats(m.intensities).bytes();
+}
+
+std::vector<uint8_t> odometryCdr(const nav_msgs::Odometry& m, bool big_endian)
+{
+  CdrWriter c(big_endian);
+  c.header(m.header).str(m.child_frame_id);
+  const auto& p = m.pose.pose;
+  for (double v : {p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z,
+                   p.orientation.w})
+    c.put<double>(v);
+  for (double v : m.pose.covariance) c.put<double>(v);
+  const auto& t = m.twist.twist;
+  for (double v : {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z}) c.put<double>(v);
+  for (double v : m.twist.covariance) c.put<double>(v);
+  return c.bytes();
+}
+
+std::vector<uint8_t> tfMessageCdr(const tf2_msgs::TFMessage& m, bool big_endian)
+{
+  CdrWriter c(big_endian);
+  c.put<uint32_t>(static_cast<uint32_t>(m.transforms.size()));
+  for (const auto& t : m.transforms)
+  {
+    c.header(t.header).str(t.child_frame_id);
+    const auto& tr = t.transform;
+    for (double v : {tr.translation.x, tr.translation.y, tr.translation.z, tr.rotation.x, tr.rotation.y,
+                     tr.rotation.z, tr.rotation.w})
+      c.put<double>(v);
+  }
+  return c.bytes();
 }
 
 }  // namespace swslam::io

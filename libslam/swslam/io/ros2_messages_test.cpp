@@ -2,7 +2,7 @@
 // buffers, every truncation named, the ray bound before any allocation.
 #include <swslam/io/cdr_reader.h>
 #include <swslam/io/ros2_messages.h>
-#include <swslam/io/ros2_test_writers.h>
+#include <swslam/io/cdr_writer.h>
 #include <swslam/sensor/input_bounds.h>
 
 #include "test_support.h"
@@ -12,7 +12,6 @@
 #include <cmath>
 
 using namespace swslam::io;
-using namespace swslam::io::testing;
 using swslam::test::errorOf;
 
 namespace
@@ -139,12 +138,12 @@ TEST(Ros2Messages, AScanOfMoreRaysThanTheBoundIsRefusedBeforeAnyAllocation)
 
 TEST(Ros2Messages, AStampBefore1970OrPastItsSecondIsNamed)
 {
-  CdrOut c(false);
+  CdrWriter c(false);
   c.put<int32_t>(-5).put<uint32_t>(0).str("laser");
   auto b = c.bytes();
   EXPECT_NE(errorOf([&] { laserScanFromCdr(b.data(), b.size()); }).find("a stamp of -5 s, before 1970"),
             std::string::npos);
-  CdrOut d(false);
+  CdrWriter d(false);
   d.put<int32_t>(5).put<uint32_t>(1000000000u).str("laser");
   b = d.bytes();
   EXPECT_NE(errorOf([&] { odometryFromCdr(b.data(), b.size()); }).find("ns past its second"), std::string::npos);

@@ -2,7 +2,8 @@
 // The messages of a ROS 2 bag, whatever holds them: a rosbag2 folder (metadata.yaml naming
 // its .db3 or .mcap files, read in its order), a single .mcap file or a single .db3 file.
 // .db3 files are read through SQLite (rosbag2's tables `topics` and `messages`, in timestamp
-// order), .mcap files through mcap_reader.h (in file order, as rosbag2 records them).
+// order), .mcap files through mcap_reader.h (in log-time order, as rosbag2 plays them, though
+// a file's chunks or the messages in one may be out of order: mcap_storage.cpp).
 // Messages compressed one by one with zstd (metadata.yaml's compression_mode MESSAGE) are
 // decompressed, each bounded by kMaxRos2MessageBytes; files compressed whole (FILE) are
 // decompressed into a folder under $TMPDIR first (zstd_file.h), removed with the storage.
@@ -20,6 +21,10 @@ namespace swslam::io
 /** [bytes] The largest message read, once decompressed (64 MiB: a scan of 2^20 rays with
  * intensities takes 8 MiB); as for ROS 1 bags. */
 constexpr uint64_t kMaxRos2MessageBytes = uint64_t(64) << 20;
+
+/** [bytes] The most an .mcap file's messages read ahead to give them in log-time order may hold
+ * (256 MiB: a recorder writes a chunk of a few MiB at a time, in order within a few chunks). */
+constexpr uint64_t kMaxMcapReorderBytes = uint64_t(256) << 20;
 
 struct Ros2Message
 {

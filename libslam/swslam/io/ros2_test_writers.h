@@ -1,11 +1,10 @@
 #pragma once
-// Test-only writers of CDR messages and MCAP records, byte by byte as the specifications lay
-// them out, for the unit tests of the ROS 2 readers (the whole-program tests read bags written
-// by the npm packages @mcap/core and @foxglove/cdr: tests/ros2/make-bags.mjs).
+// Test-only writers of MCAP records, byte by byte as the specification lays them out, to craft
+// damaged files for the unit tests of the ROS 2 readers (the messages' CDR: ros2_messages.h;
+// the whole-program tests also read bags written by the npm packages @mcap/core and
+// @foxglove/cdr: tests/ros2/make-bags.mjs).
 
-#include <nav_msgs/Odometry.h>
-#include <sensor_msgs/LaserScan.h>
-#include <tf2_msgs/TFMessage.h>
+#include <swslam/io/ros2_messages.h>
 
 #include <cstdint>
 #include <cstring>
@@ -15,84 +14,6 @@
 
 namespace swslam::io::testing
 {
-/** CDR (XCDR1) of either byte order: the 4-byte header, then aligned primitives. */
-class CdrOut
-{
- public:
-  explicit CdrOut(bool big_endian) : big_(big_endian), bytes_{0, uint8_t(big_endian ? 0 : 1), 0, 0} {}
-  template <class T>
-  CdrOut& put(T v)
-  {
-    while ((bytes_.size() - 4) % sizeof(T)) bytes_.push_back(0);
-    uint8_t b[sizeof(T)];
-    std::memcpy(b, &v, sizeof(T));
-    for (size_t i = 0; i < sizeof(T); i++) bytes_.push_back(b[big_ ? sizeof(T) - 1 - i : i]);
-    return *this;
-  }
-  CdrOut& str(const std::string& s)
-  {
-    put<uint32_t>(static_cast<uint32_t>(s.size() + 1));
-    bytes_.insert(bytes_.end(), s.begin(), s.end());
-    bytes_.push_back(0);
-    return *this;
-  }
-  CdrOut& header(const std_msgs::Header& h)
-  {
-    put<int32_t>(static_cast<int32_t>(h.stamp.sec)).put<uint32_t>(h.stamp.nsec);
-    return str(h.frame_id);
-  }
-  CdrOut& floats(const std::vector<float>& v)
-  {
-    put<uint32_t>(static_cast<uint32_t>(v.size()));
-    for (float x : v) put<float>(x);
-    return *this;
-  }
-  std::vector<uint8_t>& bytes() { return bytes_; }
-
- private:
-  bool big_;
-  std::vector<uint8_t> bytes_;
-};
-
-inline std::vector<uint8_t> laserScanCdr(const sensor_msgs::LaserScan& m, bool big_endian = false)
-{
-  CdrOut c(big_endian);
-  c.header(m.header);
-  for (float v : {m.angle_min, m.angle_max, m.angle_increment, m.time_increment, m.scan_time, m.range_min, m.range_max})
-    c.put<float>(v);
-  return c.floats(m.ranges).floats(m.intensities).bytes();
-}
-
-inline std::vector<uint8_t> odometryCdr(const nav_msgs::Odometry& m, bool big_endian = false)
-{
-  CdrOut c(big_endian);
-  c.header(m.header).str(m.child_frame_id);
-  const auto& p = m.pose.pose;
-  for (double v : {p.position.x, p.position.y, p.position.z, p.orientation.x, p.orientation.y, p.orientation.z,
-                   p.orientation.w})
-    c.put<double>(v);
-  for (double v : m.pose.covariance) c.put<double>(v);
-  const auto& t = m.twist.twist;
-  for (double v : {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z}) c.put<double>(v);
-  for (double v : m.twist.covariance) c.put<double>(v);
-  return c.bytes();
-}
-
-inline std::vector<uint8_t> tfMessageCdr(const tf2_msgs::TFMessage& m, bool big_endian = false)
-{
-  CdrOut c(big_endian);
-  c.put<uint32_t>(static_cast<uint32_t>(m.transforms.size()));
-  for (const auto& t : m.transforms)
-  {
-    c.header(t.header).str(t.child_frame_id);
-    const auto& tr = t.transform;
-    for (double v : {tr.translation.x, tr.translation.y, tr.translation.z, tr.rotation.x, tr.rotation.y,
-                     tr.rotation.z, tr.rotation.w})
-      c.put<double>(v);
-  }
-  return c.bytes();
-}
-
 /** Little-endian MCAP fields and records. */
 struct McapOut
 {

@@ -55,13 +55,20 @@ CObservation2DRangeScan scanFromRos(const sensor_msgs::LaserScan& msg, const std
       !problem.empty())
     throw std::invalid_argument(problem);
   const double step = msg.angle_increment;
+  // The fan: from angle_min to angle_max when that is its last ray, as the angles of a fan
+  // written as float32 state it exactly (a rawlog's aperture comes back to the bit, and a
+  // symmetric fan's middle to 0); else (angle_max one increment past the last ray) from the
+  // increment.
+  const double last = msg.angle_min + step * static_cast<double>(n - 1);
+  const bool max_is_last = std::abs(last - msg.angle_max) <= std::abs(last + step - msg.angle_max);
+  const double span = max_is_last ? double(msg.angle_max) - msg.angle_min : step * static_cast<double>(n - 1);
   CObservation2DRangeScan scan;
   scan.timestamp = mrpt::ros1bridge::fromROS(msg.header.stamp);
   scan.sensorLabel = label;
   scan.rightToLeft = true;
-  scan.aperture = static_cast<float>(std::abs(step) * (n - 1));
+  scan.aperture = static_cast<float>(std::abs(span));
   scan.maxRange = msg.range_max;
-  const double middle = msg.angle_min + step * (n - 1) / 2;
+  const double middle = msg.angle_min + span / 2;
   scan.sensorPose = sensor_pose + CPose3D(0, 0, 0, middle, 0, 0);
   scan.resizeScan(n);
   for (size_t i = 0; i < n; i++)
