@@ -9,10 +9,11 @@ int main(int argc, char** argv)
   TCLAP::CmdLine cmd("swslam-regen-map: a run's map again, at another resolution", ' ', "0.1");
   TCLAP::ValueArg<std::string> run("r", "run", "Output directory of a swslam run (graph.graph, keyframes.tum)",
                                    true, "", "DIR", cmd);
-  TCLAP::ValueArg<std::string> input("i", "input", "The run's input log", true, "", "LOG", cmd);
+  TCLAP::ValueArg<std::string> input("i", "input", "The run's input log (default: the one its run.ini names)", false,
+                                     "", "LOG", cmd);
   TCLAP::ValueArg<std::string> output("o", "output", "Where to write the map files", true, "", "DIR", cmd);
-  TCLAP::ValueArg<std::string> config("c", "config", "Configuration ([map], [carmen]; default: the installed "
-                                      "config/default.ini)", false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config("c", "config", "Configuration ([map], [carmen]; default: the run's run.ini, "
+                                      "else the installed config/default.ini)", false, "", "INI", cmd);
   TCLAP::ValueArg<double> resolution("", "resolution", "Cell size [m] (default: the config's)", false, 0, "M", cmd);
   TCLAP::SwitchArg no_render("", "no-render", "Skip render.png", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;

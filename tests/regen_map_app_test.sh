@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # swslam-regen-map on a short run of lake-short: the map comes back from graph.graph and
-# keyframes.tum; a stats.csv that does not match the trajectory is reported (the pictures then
+# keyframes.tum, with the input and config named on the command line or taken from run.ini; a stats.csv that does not match the trajectory is reported (the pictures then
 # mark no scan), a malformed graph.graph line is reported (it was skipped silently), and a
 # malformed keyframes.tum line is an error naming the file and line.
 set -uo pipefail
@@ -15,6 +15,19 @@ log=$src/datasets/lake-short/lake-short.rawlog
 regen() { "$bin/swslam-regen-map" -r "$tmp/run" -i "$log" -c "$src/config/default.ini" -o "$tmp/$1" --no-render; }
 regen clean > "$tmp/clean.log" 2>&1 || { echo "FAIL: clean regen exited $?"; cat "$tmp/clean.log"; fail=1; }
 [[ -s $tmp/clean/map.png ]] || { echo "FAIL: clean regen wrote no map.png"; fail=1; }
+
+# With neither -i nor -c: both from the run's run.ini, the same map; a run folder without
+# run.ini (from before it was written) and no -i: an error asking for it, nothing written.
+"$bin/swslam-regen-map" -r "$tmp/run" -o "$tmp/recorded" --no-render > "$tmp/recorded.log" 2>&1 ||
+  { echo "FAIL: regen from run.ini exited $?"; cat "$tmp/recorded.log"; fail=1; }
+cmp -s "$tmp/clean/map.gridmap.gz" "$tmp/recorded/map.gridmap.gz" ||
+  { echo "FAIL: the map from run.ini differs from the map with -i and -c"; fail=1; }
+cp -r "$tmp/run" "$tmp/old-run" && rm "$tmp/old-run/run.ini"
+"$bin/swslam-regen-map" -r "$tmp/old-run" -o "$tmp/old" --no-render > "$tmp/old.log" 2>&1
+code=$?
+[[ $code -eq 1 ]] || { echo "FAIL: a run without run.ini and no -i: exit $code (expected 1)"; fail=1; }
+grep -q "run.ini' is missing.*give the log with -i" "$tmp/old.log" || { echo "FAIL: no message asking for -i"; cat "$tmp/old.log"; fail=1; }
+[[ -e $tmp/old ]] && { echo "FAIL: a run without run.ini wrote a map"; fail=1; }
 
 # A --resolution out of the range [map] resolution allows: an error naming it, nothing written.
 "$bin/swslam-regen-map" -r "$tmp/run" -i "$log" -c "$src/config/default.ini" -o "$tmp/res" --no-render \

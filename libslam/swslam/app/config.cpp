@@ -8,6 +8,7 @@ Config loadConfig(const mrpt::config::CConfigFileBase& cfg, const std::vector<st
 {
   std::vector<std::string> others = other_sections;
   others.push_back(io::CarmenParams::table().section());
+  others.push_back("run");  // a run's record (run_record.h) is a configuration too
   Config c;
   c.system = system::loadSystemParams(cfg, others);
   io::CarmenParams::table().load(cfg, c.carmen);

@@ -29,7 +29,8 @@ struct Config
 };
 
 /** Loads every section present, strictly; absent sections and keys keep their defaults.
- * `other_sections` are allowed and left alone (a sensor's [LASER_2D] beside swslam's).
+ * `other_sections` are allowed and left alone (a sensor's [LASER_2D] beside swslam's), and
+ * so is [run], so that a run's run.ini (run_record.h) is a configuration.
  * Throws std::invalid_argument naming the section or key that is wrong. */
 Config loadConfig(const mrpt::config::CConfigFileBase& cfg, const std::vector<std::string>& other_sections = {});
 Config loadConfig(const std::string& ini_path);

@@ -6,6 +6,7 @@
 #include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
+#include <swslam/app/run_record.h>
 #include <swslam/app/skip_reporter.h>
 #include <swslam/app/stop_signal.h>
 #include <swslam/common/ini_file.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <ostream>
@@ -39,14 +41,24 @@ std::string statusLine(const system::SystemStatus& s, const io::HokuyoLinkStats&
   return buf;
 }
 
+std::string recordingPath(const LiveRunOptions& opts)
+{
+  return opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record;
+}
+
 /** Writes every output of what the system holds now (it keeps running); false if one failed. */
 bool save(const system::SlamSystem& slam, const system::SystemParams& params, const LiveRunOptions& opts,
           double wall, std::ostream& err, bool final_save)
 {
   const system::RunResults results = slam.results();
   const std::string text = "# swslam-live\n" + system::formatRunSummary(summarizeRun(results, wall));
+  RunRecord record;
+  record.program = "swslam-live";
+  record.input = std::filesystem::absolute(recordingPath(opts)).lexically_normal().string();
+  record.deterministic = opts.deterministic;
+  record.config.system = params;
   const auto problems = writeRunOutputs(opts.output, results, slam.mapSnapshot(), params.map, text,
-                                        opts.render && final_save);
+                                        runRecordText(record), opts.render && final_save);
   for (const auto& p : problems) err << "swslam-live: could not write " << p.file << ": " << p.message << "\n";
   return problems.empty();
 }
@@ -116,8 +128,7 @@ void startRecording(const LiveRunOptions& opts, Opened& in, std::ostream& err)
   in.folder->clearPreviousRun(runOutputFiles());
   try
   {
-    in.recorder = std::make_unique<io::RawlogRecorder>(
-        opts.record.empty() ? opts.output + "/recording.rawlog" : opts.record, milliseconds(1000));
+    in.recorder = std::make_unique<io::RawlogRecorder>(recordingPath(opts), milliseconds(1000));
   }
   catch (const std::exception& e)
   {

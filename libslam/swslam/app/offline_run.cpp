@@ -5,6 +5,7 @@
 #include <swslam/app/output_folder.h>
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
+#include <swslam/app/run_record.h>
 #include <swslam/app/skip_reporter.h>
 #include <swslam/app/stop_signal.h>
 #include <swslam/eval/report.h>
@@ -243,11 +244,22 @@ void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::os
   const std::string text = "# swslam on " + in.source->describe() + " (" +
                            (opts.deterministic ? "deterministic" : "threaded") + ")\n" +
                            system::formatRunSummary(summary);
+  RunRecord record;
+  record.program = "swslam";
+  record.input = std::filesystem::absolute(opts.input).lexically_normal().string();
+  record.use_odometry = opts.use_odometry;
+  record.deterministic = opts.deterministic;
+  record.sensor_label = opts.sensor_label;
+  record.scan_topic = opts.scan_topic;
+  record.odom_topic = opts.odom_topic;
+  record.max_scans = opts.max_scans;
+  record.throttle_scans = opts.throttle_scans;
+  record.config = in.config;
   OutputFolder::Replaced written;
   try
   {
     written = in.folder->replaceRun(runOutputFiles(), [&](const std::string& dir) {
-      return writeRunOutputs(dir, p.results, p.grid, in.config.system.map, text, opts.render);
+      return writeRunOutputs(dir, p.results, p.grid, in.config.system.map, text, runRecordText(record), opts.render);
     });
   }
   catch (const std::exception& e)

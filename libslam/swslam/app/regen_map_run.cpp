@@ -5,10 +5,12 @@
 #include <swslam/app/exit_codes.h>
 #include <swslam/app/regen_map.h>
 #include <swslam/app/run_outputs.h>
+#include <swslam/app/run_record.h>
 #include <swslam/graph/io.h>
 #include <swslam/map/outputs.h>
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -56,16 +58,30 @@ system::RunResults loadRun(const std::string& dir, std::ostream& err)
     err << "swslam-regen-map: " << stats_problem << "; the pictures mark no scan as placed by the prediction\n";
   return run;
 }
+
+/** The run's record (run.ini), read when an option is left to it; none if the run has none. */
+std::optional<RunRecord> recordFor(const RegenMapOptions& o)
+{
+  const std::string path = (std::filesystem::path(o.run) / kRunRecordFile).string();
+  if (!o.input.empty() && !o.config.empty()) return std::nullopt;
+  if (std::filesystem::exists(path)) return readRunRecord(path);
+  if (o.input.empty())
+    throw std::invalid_argument("no input log: '" + path + "' is missing (a run before run.ini was written); give the log with -i");
+  return std::nullopt;
+}
 }  // namespace
 
 int runRegenMap(const RegenMapOptions& o, std::ostream& out, std::ostream& err)
 {
   return exitCodeOf("swslam-regen-map", err, [&] {
-    const Config loaded = loadConfig(configOrDefault(o.config));
+    // What the command line leaves out comes from the run's record.
+    const std::optional<RunRecord> record = recordFor(o);
+    const Config loaded = !o.config.empty() || !record ? loadConfig(configOrDefault(o.config)) : record->config;
+    const std::string input = o.input.empty() ? record->input : o.input;
     const map::MapParams params = mapParams(loaded, o.resolution);
     const system::RunResults run = loadRun(o.run, err);
     RegenReport report;
-    const auto grid = regenerateMap(run.graph, run.keyframes, o.input, params, loaded.carmen, &report);
+    const auto grid = regenerateMap(run.graph, run.keyframes, input, params, loaded.carmen, &report);
     const auto problems = map::writeMapOutputs(o.output, grid, params, overlayOf(run), o.render);
     for (const auto& p : problems) err << "swslam-regen-map: " << p.file << ": " << p.message << "\n";
     out << report.inserted << " of " << report.nodes << " node scans inserted at " << params.resolution

@@ -13,9 +13,9 @@ namespace swslam::app
 struct RegenMapOptions
 {
   std::string run;     ///< output directory of a swslam run (graph.graph, keyframes.tum)
-  std::string input;   ///< the run's input log
+  std::string input;   ///< the run's input log; empty: the one its run.ini names
   std::string output;  ///< where to write the map files
-  std::string config;  ///< .ini ([map], [carmen]); empty: the installed config/default.ini
+  std::string config;  ///< .ini ([map], [carmen]); empty: the run's run.ini, else the installed config/default.ini
   std::optional<double> resolution;  ///< [m] cell size; none: the config's
   bool render = true;  ///< render.png
 };

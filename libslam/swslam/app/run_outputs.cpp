@@ -1,5 +1,7 @@
 #include <swslam/app/run_outputs.h>
 
+#include <swslam/app/run_record.h>
+
 #include <swslam/common/atomic_file.h>
 #include <swslam/eval/report.h>
 #include <swslam/graph/io.h>
@@ -92,7 +94,7 @@ map::Overlay overlayOf(const system::RunResults& results)
 std::vector<std::string> runOutputFiles()
 {
   return {"map.gridmap.gz", "map.png", "map.yaml", "map.pgm", "map.bt", "render.png",
-          "trajectory.tum", "keyframes.tum", "graph.graph", "stats.csv", "summary.md"};
+          "trajectory.tum", "keyframes.tum", "graph.graph", "stats.csv", "summary.md", kRunRecordFile};
 }
 
 std::string outputsLine(const std::string& dir, bool render)
@@ -117,7 +119,7 @@ std::string outputsLine(const std::string& dir, bool render)
 std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const system::RunResults& results,
                                            const mrpt::maps::COccupancyGridMap2D& grid,
                                            const map::MapParams& map_params, const std::string& summary,
-                                           bool render)
+                                           const std::string& run_record, bool render)
 {
   std::vector<map::OutputProblem> problems = map::writeMapOutputs(dir, grid, map_params, overlayOf(results), render);
   const std::filesystem::path d(dir);
@@ -138,6 +140,7 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
   });
   attempt("stats.csv", [&](const std::string& p) { common::writeTextAtomically(p, system::formatStatsCsv(results.stats)); });
   attempt("summary.md", [&](const std::string& p) { common::writeTextAtomically(p, summary); });
+  attempt(kRunRecordFile, [&](const std::string& p) { common::writeTextAtomically(p, run_record); });
   return problems;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A run's files, written into one directory, each atomically: trajectory.tum (every scan),
-// keyframes.tum, graph.graph (MRPT format), stats.csv, summary.md (Table I), and the map
+// keyframes.tum, graph.graph (MRPT format), stats.csv, summary.md (Table I), run.ini (how the
+// run was made: run_record.h), and the map
 // outputs of writeMapOutputs (map.gridmap.gz, map.png, map.yaml + map.pgm, map.bt,
 // render.png).
 
@@ -17,7 +18,7 @@ namespace swslam::app
 std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const system::RunResults& results,
                                            const mrpt::maps::COccupancyGridMap2D& grid,
                                            const map::MapParams& map_params, const std::string& summary,
-                                           bool render = true);
+                                           const std::string& run_record, bool render = true);
 
 /** The files writeRunOutputs writes (render.png included), by name. */
 std::vector<std::string> runOutputFiles();

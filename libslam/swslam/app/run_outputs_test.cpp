@@ -73,7 +73,7 @@ TEST(RunOutputs, EveryFileWrittenIsNamedByRunOutputFiles)
   const std::string dir = test::tempDir("run_outputs");
   const system::RunResults r = straightRunWithJitter();
   mrpt::maps::COccupancyGridMap2D grid(-5, 15, -5, 5, 0.1);
-  const auto problems = app::writeRunOutputs(dir, r, grid, map::MapParams(), "# summary\n", false);
+  const auto problems = app::writeRunOutputs(dir, r, grid, map::MapParams(), "# summary\n", "[run]\n", false);
   EXPECT_TRUE(problems.empty());
   std::set<std::string> written, named;
   for (const auto& e : std::filesystem::directory_iterator(dir)) written.insert(e.path().filename().string());
@@ -89,7 +89,7 @@ TEST(RunOutputs, TheLastLineNamesOnlyTheOutputsThatExist)
   for (const char* name : {"map.png", "trajectory.tum", "map.yaml"}) std::ofstream(dir + "/" + name) << "x";
   EXPECT_EQ(app::outputsLine(dir, false), "# outputs in " + dir +
                                          "/ (map.png, trajectory.tum); not written: map.gridmap.gz, map.pgm, map.bt, "
-                                         "keyframes.tum, graph.graph, stats.csv, summary.md\n");
+                                         "keyframes.tum, graph.graph, stats.csv, summary.md, run.ini\n");
   for (const auto& name : app::runOutputFiles()) std::ofstream(dir + "/" + name) << "x";
   EXPECT_EQ(app::outputsLine(dir, true),
             "# outputs in " + dir + "/ (map.png, render.png, trajectory.tum, stats.csv, summary.md)\n");
