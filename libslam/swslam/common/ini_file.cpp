@@ -57,4 +57,14 @@ std::unique_ptr<mrpt::config::CConfigFileMemory> readIniFile(const std::string& 
   }
 }
 
+size_t readIniCount(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+                    const std::string& source)
+{
+  const std::string v = cfg.read_string(section, key, "");
+  const bool digits = !v.empty() && v.size() <= 19 && v.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits)
+    throw std::invalid_argument(source + ": [" + section + "] " + key + " must be a count, got '" + v + "'");
+  return static_cast<size_t>(std::stoull(v));
+}
+
 }  // namespace swslam::common

@@ -7,6 +7,7 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -21,5 +22,10 @@ void checkIniLines(const std::string& text, const std::string& source);
  * naming the file if it cannot be read, or the line that is wrong, or MRPT's message if it
  * cannot expand a $env{NAME} or ${expression} of the text (comments included). */
 std::unique_ptr<mrpt::config::CConfigFileMemory> readIniFile(const std::string& path);
+
+/** [section] key of `cfg` as a whole count (decimal digits only). Throws std::invalid_argument
+ * "SOURCE: [section] key must be a count, got 'VALUE'" if it is missing or not one. */
+size_t readIniCount(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+                    const std::string& source);
 
 }  // namespace swslam::common

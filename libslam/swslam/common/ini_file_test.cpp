@@ -30,3 +30,24 @@ TEST(IniFile, AnExpressionMrptCannotExpandIsAnInvalidArgumentNamingTheFile)
     EXPECT_NE(std::string(e.what()).find("config: '" + path + "'"), std::string::npos) << e.what();
   }
 }
+
+TEST(IniFile, ACountIsDigitsOnlyAndAnythingElseIsNamed)
+{
+  mrpt::config::CConfigFileMemory cfg("[run]\nscans = 1200\nzero = 0\nnegative = -3\nword = ten\nhalf = 1.5\n"
+                                      "huge = 99999999999999999999\n");
+  EXPECT_EQ(swslam::common::readIniCount(cfg, "run", "scans", "src"), 1200u);
+  EXPECT_EQ(swslam::common::readIniCount(cfg, "run", "zero", "src"), 0u);
+  for (const char* key : {"negative", "word", "half", "huge", "missing"})
+  {
+    try
+    {
+      swslam::common::readIniCount(cfg, "run", key, "src");
+      ADD_FAILURE() << key << " accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_EQ(std::string(e.what()).rfind(std::string("src: [run] ") + key + " must be a count, got '", 0), 0u)
+          << e.what();
+    }
+  }
+}
