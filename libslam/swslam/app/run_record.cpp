@@ -27,23 +27,6 @@ bool flag(const mrpt::config::CConfigFileBase& cfg, const std::string& key, cons
   throw std::invalid_argument("run record '" + path + "': [run] " + key + " must be true or false, got '" + v + "'");
 }
 
-size_t count(const mrpt::config::CConfigFileBase& cfg, const std::string& key, const std::string& path)
-{
-  const std::string v = required(cfg, key, path);
-  size_t used = 0;
-  unsigned long long n = 0;
-  try
-  {
-    n = std::stoull(v, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used != v.size() || v[0] == '-')
-    throw std::invalid_argument("run record '" + path + "': [run] " + key + " must be a count, got '" + v + "'");
-  return static_cast<size_t>(n);
-}
 }  // namespace
 
 std::string RunRecord::swslamVersion() { return SWSLAM_VERSION; }
@@ -91,8 +74,8 @@ RunRecord readRunRecord(const std::string& path)
   r.sensor_label = cfg->read_string(kSection, "sensor_label", "");
   r.scan_topic = cfg->read_string(kSection, "scan_topic", "");
   r.odom_topic = cfg->read_string(kSection, "odom_topic", "");
-  r.max_scans = count(*cfg, "max_scans", path);
-  r.throttle_scans = count(*cfg, "throttle_scans", path);
+  r.max_scans = common::readIniCount(*cfg, kSection, "max_scans", "run record '" + path + "'");
+  r.throttle_scans = common::readIniCount(*cfg, kSection, "throttle_scans", "run record '" + path + "'");
   try
   {
     r.config = loadConfig(*cfg, {kSection});
