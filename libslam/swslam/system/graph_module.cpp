@@ -40,6 +40,37 @@ void GraphModule::addEdge(const graph::Constraint& e, GraphStep& step)
   }
 }
 
+void GraphModule::restore(graph::PoseGraph graph, const std::vector<std::shared_ptr<const plicp::ReferenceScan>>& scans)
+{
+  if (!nodes_.empty()) throw std::logic_error("graph: a session is restored before the first node");
+  const size_t n = graph.nodeCount();
+  if (n == 0 || scans.size() != n)
+    throw std::invalid_argument("graph: a restored session needs one scan per node (" + std::to_string(scans.size()) +
+                                " for " + std::to_string(n) + " nodes)");
+  std::vector<double> step(n, 0.0);  // the consecutive edge's length into each node
+  size_t loops = 0;
+  for (size_t k = 0; k < graph.edgeCount(); k++)
+  {
+    const auto& e = graph.edge(k);
+    if (e.kind == graph::EdgeKind::Loop) loops++;
+    if (e.kind == graph::EdgeKind::Consecutive && e.to == e.from + 1 && e.to < n) step[e.to] = e.measurement->mean.norm();
+  }
+  for (size_t id = 0; id < n; id++)
+  {
+    if (!graph.hasNode(id))
+      throw std::invalid_argument("graph: a restored session's nodes must be 0.." + std::to_string(n - 1) + "; " +
+                                  std::to_string(id) + " is missing");
+    scans_.add(id, scans[id]);
+    loop::LoopNode ln;
+    ln.id = id;
+    ln.path_length = id == 0 ? 0.0 : nodes_.back().path_length + step[id];
+    nodes_.push_back(ln);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  graph_ = std::move(graph);
+  loops_ = loops;
+}
+
 GraphStep GraphModule::addNode(const NewNode& node)
 {
   GraphStep step;

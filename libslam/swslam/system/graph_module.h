@@ -18,6 +18,7 @@
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
 
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -51,6 +52,12 @@ class GraphModule
    * edges and any verified loop, then optimizes the window, or everything after a loop that
    * corrects the graph (FullOptimizationSchedule, loopCorrectsGraph). */
   GraphStep addNode(const NewNode& node);
+
+  /** Continues a saved session (before the first node): `graph` with nodes 0..n-1 and
+   * `scans[id]` each node's scan. A node's path length is summed over the consecutive edges
+   * (k-1 -> k) as addNode sums it. Throws std::logic_error after a node, std::invalid_argument
+   * for a graph whose nodes are not 0..n-1 or a scan count that differs. */
+  void restore(graph::PoseGraph graph, const std::vector<std::shared_ptr<const plicp::ReferenceScan>>& scans);
 
   /** Optimizes the whole graph (e.g. at the end of a run). */
   GraphStep optimizeAll(size_t scan);

@@ -2,6 +2,13 @@
 
 namespace swslam::system
 {
+void RunRecorder::resumed(const std::vector<double>& node_times)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  keyframe_times_ = node_times;
+  status_.nodes = node_times.size();
+}
+
 void RunRecorder::skipped()
 {
   std::lock_guard<std::mutex> lock(mutex_);

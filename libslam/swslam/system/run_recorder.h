@@ -43,6 +43,8 @@ struct RunResults
 class RunRecorder
 {
  public:
+  /** A resumed session's nodes, stamped (before any scan): keyframes.tum lists them first. */
+  void resumed(const std::vector<double>& node_times);
   /** A scan skipped where it entered. */
   void skipped();
   /** Scan `index` (stamped `timestamp`), tracked in `seconds`; the tracker has `nodes` nodes. */

@@ -1,9 +1,12 @@
 #include <swslam/system/slam_system.h>
 
+#include <swslam/sensor/scan.h>
 
 #include <chrono>
 #include <cmath>
 #include <pthread.h>
+#include <stdexcept>
+#include <string>
 
 namespace swslam::system
 {
@@ -38,6 +41,41 @@ SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
 }
 
 SlamSystem::~SlamSystem() { finish(); }
+
+void SlamSystem::resume(const ResumedSession& session)
+{
+  if (fed_ > 0 || finished_) throw std::logic_error("slam: a session is resumed before the first scan");
+  const size_t n = session.graph.nodeCount();
+  if (n == 0 || session.observations.size() != n)
+    throw std::invalid_argument("slam: a resumed session has " + std::to_string(n) + " graph nodes and " +
+                                std::to_string(session.observations.size()) + " node observations");
+  std::vector<mrpt::poses::CPose2D> poses;
+  std::vector<std::shared_ptr<const plicp::ReferenceScan>> scans;
+  std::vector<double> times;
+  for (size_t id = 0; id < n; id++)
+  {
+    const auto& obs = session.observations[id];
+    if (!obs) throw std::invalid_argument("slam: resumed node " + std::to_string(id) + " has no observation");
+    if (!session.graph.hasNode(id))
+      throw std::invalid_argument("slam: a resumed session's graph has no node " + std::to_string(id));
+    try
+    {
+      sensor::checkObservationGeometry(*obs);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      throw std::invalid_argument("slam: resumed node " + std::to_string(id) + "'s observation: " + e.what());
+    }
+    poses.push_back(session.graph.pose(id));
+    scans.push_back(std::make_shared<const plicp::ReferenceScan>(
+        sensor::scanFromCheckedObservation(*obs, params_.tracking.min_range), params_.plicp));
+    times.push_back(mrpt::Clock::toDouble(obs->timestamp));
+  }
+  graph_.restore(session.graph, scans);
+  tracker_.resume(poses, session.observations);
+  for (size_t id = 0; id < n; id++) map_.handle(MapInsert{0, id, session.observations[id], poses[id]});
+  recorder_.resumed(times);
+}
 
 FeedResult SlamSystem::feed(sensor::ScanInput input)
 {

@@ -29,6 +29,14 @@
 
 namespace swslam::system
 {
+/** A saved session to continue (app/session.h reads one): its graph, nodes 0..n-1, and each
+ * node's observation, as the session's run fed it. */
+struct ResumedSession
+{
+  graph::PoseGraph graph;
+  std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> observations;  ///< by node id
+};
+
 enum class RunMode
 {
   Threaded,       ///< three module threads (live use; the default)
@@ -42,6 +50,13 @@ class SlamSystem
   ~SlamSystem();
   SlamSystem(const SlamSystem&) = delete;
   SlamSystem& operator=(const SlamSystem&) = delete;
+
+  /** Continues `session` (before the first scan): its nodes become the graph's and the map's,
+   * its last nodes tracking's keyframes; new nodes take the next ids, and loops between the
+   * session's nodes and the new ones close as any loop. Throws std::logic_error after a scan,
+   * std::invalid_argument naming a node whose observation is missing or fails the input's
+   * geometry check, or a graph that does not fit the observations. */
+  void resume(const ResumedSession& session);
 
   /** Processes one scan (threaded: queues it, waiting while the queue is full). */
   FeedResult feed(sensor::ScanInput input);

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace swslam::tracking
 {
@@ -74,6 +76,32 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   step.pose = last.pose + rel;
   if (makesNode(rel, step.match.ok())) addNode(scan, step);
   return step;
+}
+
+void LocalTracker::resume(const std::vector<CPose2D>& poses,
+                          const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& observations)
+{
+  if (!keyframes_.empty()) throw std::logic_error("tracking: a session is resumed before the first scan");
+  if (poses.empty() || observations.size() != poses.size())
+    throw std::invalid_argument("tracking: a resumed session needs one observation per node pose (" +
+                                std::to_string(observations.size()) + " for " + std::to_string(poses.size()) + ")");
+  const size_t first_kept = poses.size() > kept() ? poses.size() - kept() : 0;
+  for (size_t id = 0; id < poses.size(); id++)
+  {
+    if (id < first_kept)
+    {
+      Keyframe kf;
+      kf.id = id;
+      kf.pose = poses[id];
+      keyframes_.push_back(std::move(kf));
+      continue;
+    }
+    if (!observations[id])
+      throw std::invalid_argument("tracking: resumed node " + std::to_string(id) + " has no observation");
+    addKeyframe(PreparedScan(sensor::scanFromCheckedObservation(*observations[id], tracking_.min_range), forms_),
+                poses[id]);
+  }
+  last_time_ = keyframes_.back().timestamp;
 }
 
 void LocalTracker::addNode(const PreparedScan& scan, TrackingStep& step)

@@ -76,6 +76,14 @@ class LocalTracker
   TrackingStep process(const mrpt::obs::CObservation2DRangeScan& obs,
                        const std::optional<mrpt::poses::CPose2D>& odometry_increment = std::nullopt);
 
+  /** Continues a saved session (before the first scan): its nodes become keyframes 0..n-1 at
+   * `poses`, and `observations` (one per node, null allowed for all but the last kept()) give
+   * the last kept() their scans. The next scan is matched against the last keyframe from where
+   * the session ended, no motion known. Throws std::logic_error after a scan, and
+   * std::invalid_argument for sizes that disagree or a kept node without its observation. */
+  void resume(const std::vector<mrpt::poses::CPose2D>& poses,
+              const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& observations);
+
   /** Moves a keyframe (after graph optimization); later scans are placed relative to it. */
   void setKeyframePose(size_t id, const mrpt::poses::CPose2D& pose);
 
