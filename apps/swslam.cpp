@@ -28,6 +28,10 @@ int main(int argc, char** argv)
                                    false, 1, "N", cmd);
   TCLAP::ValueArg<double> rate("", "realtime-factor", "Pace the replay at this multiple of the log's rate (0: as fast as possible)",
                                false, 0, "X", cmd);
+  TCLAP::ValueArg<std::string> resume("", "resume", "Continue the session saved in DIR (its configuration; no -c)",
+                                      false, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> save_session("", "save-session", "Save the run as a session in DIR, to --resume later",
+                                            false, "", "DIR", cmd);
   TCLAP::SwitchArg deterministic("d", "deterministic", "One thread, fixed order: repeatable results", cmd);
   TCLAP::SwitchArg no_odometry("", "no-odometry", "Ignore odometry in the log (laser only)", cmd);
   TCLAP::SwitchArg no_progress("q", "quiet", "No progress (a bar on a terminal, else a line every 10%)", cmd);
@@ -57,5 +61,7 @@ int main(int argc, char** argv)
   o.use_odometry = !no_odometry.getValue();
   o.progress = !no_progress.getValue();
   o.render = !no_render.getValue();
+  o.resume = resume.getValue();
+  o.save_session = save_session.getValue();
   return SWSLAM_RUN_IN_LIBRARY("swslam", swslam_run_offline, o);
 }

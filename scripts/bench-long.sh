@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# Issue 42's long-mission figures: the valley path driven LAPS times (default 10: about 5 km,
-# 131,480 scans; the same waypoints repeated, as bench-valley.sh section 8 does for 4),
-# deterministic, one core, config/default.ini. Prints peak RSS, ATE, nodes and edges, the
-# memory and graph at the end of each lap, each lap's slowest tracked scan and slowest full
-# optimization, and the end of the run; writes out/bench-long/long.png, memory (RSS sampled
-# every 0.5 s) and graph size against distance, the first lap (new shore) apart from the
-# revisits (scripts/plot-long.py; needs python3-matplotlib).
+# Issue 42's long-mission figures, deterministic, one core, config/default.ini:
+#  1. the valley path driven LAPS times (default 10: about 5 km, 131,480 scans; the same
+#     waypoints repeated, as bench-valley.sh section 8 does for 4): peak RSS, ATE, nodes and
+#     edges, the memory and graph at the end of each lap, each lap's slowest tracked scan and
+#     slowest full optimization, and the end of the run; out/bench-long/long.png plots memory
+#     (RSS sampled every 0.5 s) and graph size against distance, the first lap (new shore)
+#     apart from the revisits (scripts/plot-long.py; needs python3-matplotlib);
+#  2. the valley cut at its middle, the first half saved as a session (--save-session) and the
+#     second resumed from it twice (--resume): the ATE of the nodes and of the two halves'
+#     trajectories against the uninterrupted run's, and whether the two resumes are the same
+#     byte for byte (cutting needs rawlog-edit, from mrpt-apps).
 # Usage: scripts/bench-long.sh [LAPS]   (expects build/ from scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,9 +38,38 @@ while kill -0 "$pid" 2> /dev/null; do
 done
 wait "$pid" || { echo "bench-long: swslam failed"; tail -20 "$out/run.log"; exit 1; }
 
+echo "== 1. the valley path driven $laps times"
 read -r peak_kb wall < "$out/time"
 field() { grep -F "| $1" "$out/run/summary.md" | head -1 | awk -F'|' '{print $3}' | sed 's/^ *//; s/ *$//'; }
 echo "valley path x $laps: $(field 'Scans processed'); $(field 'Travelling distance'); wall $wall s ($(field 'Sensor time'))"
 echo "peak RSS $((peak_kb / 1024)) MB; ATE $(field 'ATE (rmse)'); nodes $(field 'Number of graph nodes'); constraints (loops) $(field 'Number of graph constraints')"
 /usr/bin/python3 scripts/plot-long.py "$out/run/stats.csv" "$out/data/valley-laps.gt.tum" "$out/rss.txt" "$laps" "$out/long.png"
 rm -rf "$out/data"
+
+echo "== 2. the valley cut at its middle, saved as a session and resumed"
+if ! command -v rawlog-edit > /dev/null; then
+  echo "skipped: needs rawlog-edit (apt-get install mrpt-apps)"
+  exit 0
+fi
+[[ -f datasets/valley/valley.rawlog ]] || bash scripts/gen-datasets.sh valley > /dev/null
+s=$out/session
+mkdir -p "$s"
+entries=$(rawlog-edit --info -i datasets/valley/valley.rawlog 2>/dev/null | awk -F: '/Overall number of objects/ { print $2 + 0 }')
+half=$(( ${entries:-26296} / 2 ))
+rawlog-edit --cut --to-index $((half - 1)) -i datasets/valley/valley.rawlog -o "$s/first.rawlog" -w > /dev/null 2>&1
+rawlog-edit --cut --from-index "$half" -i datasets/valley/valley.rawlog -o "$s/second.rawlog" -w > /dev/null 2>&1
+run() { taskset -c 0 "$bin/swslam" -d -q --no-render "$@" > /dev/null 2>> "$s/runs.log"; }
+run -c config/default.ini -i datasets/valley/valley.rawlog -o "$s/whole"
+run -c config/default.ini -i "$s/first.rawlog" -o "$s/first" --save-session "$s/saved"
+run -i "$s/second.rawlog" -o "$s/resumed-1" --resume "$s/saved"
+run -i "$s/second.rawlog" -o "$s/resumed-2" --resume "$s/saved"
+ate() { "$bin/swslam-eval" ate "$1" datasets/valley/valley.gt.tum | awk -F= '/^ate_rmse/ { printf "%.4f m", $2 }'; }
+cat "$s/first/trajectory.tum" "$s/resumed-1/trajectory.tum" > "$s/halves.tum"
+nodes() { grep -vc "^#" "$1"; }
+echo "nodes: session $(nodes "$s/saved/keyframes.tum"), after the resume $(nodes "$s/resumed-1/keyframes.tum"), uninterrupted $(nodes "$s/whole/keyframes.tum")"
+echo "ATE of the nodes: resumed $(ate "$s/resumed-1/keyframes.tum"), uninterrupted $(ate "$s/whole/keyframes.tum")"
+echo "ATE of every scan: the two halves $(ate "$s/halves.tum"), uninterrupted $(ate "$s/whole/trajectory.tum")"
+same=yes
+for f in trajectory.tum keyframes.tum graph.graph map.gridmap.gz; do cmp -s "$s/resumed-1/$f" "$s/resumed-2/$f" || same="no ($f differs)"; done
+echo "two resumes byte for byte the same: $same"
+rm -f "$s"/*.rawlog

@@ -6,6 +6,7 @@
 #include <swslam/app/progress_bar.h>
 #include <swslam/app/run_outputs.h>
 #include <swslam/app/run_record.h>
+#include <swslam/app/session.h>
 #include <swslam/app/skip_reporter.h>
 #include <swslam/app/stop_signal.h>
 #include <swslam/eval/report.h>
@@ -86,6 +87,7 @@ size_t feedAll(const OfflineRunOptions& opts, io::ScanSource& source, system::Sl
 struct Opened
 {
   Config config;
+  std::optional<Session> session;  ///< --resume's
   std::unique_ptr<io::ScanSource> source;
   std::vector<common::StampedPose> truth;
   std::optional<OutputFolder> folder;
@@ -113,9 +115,22 @@ bool open(const OfflineRunOptions& opts, Opened& in, std::ostream& err)
     if (!(std::isfinite(opts.realtime_factor) && opts.realtime_factor >= 0))
       throw std::invalid_argument("--realtime-factor must be a finite number, at least 0 (0: as fast as possible), got " +
                                   std::to_string(opts.realtime_factor));
-    const std::string config = configOrDefault(opts.config);
-    if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
-    in.config = loadConfig(config);
+    if (!opts.resume.empty())
+    {
+      if (!opts.config.empty())
+        throw std::invalid_argument("--resume continues with the session's configuration (its run.ini): -c is not "
+                                    "allowed with it");
+      in.session = readSession(opts.resume);
+      in.config = in.session->record.config;
+      err << "swslam: resuming the session in " << opts.resume << " (" << in.session->resumed.graph.nodeCount()
+          << " nodes)\n";
+    }
+    else
+    {
+      const std::string config = configOrDefault(opts.config);
+      if (opts.config.empty()) err << "swslam: configuration " << config << "\n";
+      in.config = loadConfig(config);
+    }
     if (!opts.ground_truth.empty()) in.truth = eval::readNonEmptyTum(opts.ground_truth);
     in.source = io::throttleScans(
         io::openScanSource(opts.input,
@@ -143,6 +158,13 @@ Produced run(const OfflineRunOptions& opts, Opened& in, const StopSignal& stop, 
   const auto t0 = std::chrono::steady_clock::now();
   auto slam = std::make_unique<system::SlamSystem>(
       in.config.system, opts.deterministic ? system::RunMode::Deterministic : system::RunMode::Threaded);
+  if (in.session)
+  {
+    slam->resume(in.session->resumed);
+    // What a saved session needs of it again is its observations; the graph is the system's.
+    in.session->resumed.graph = graph::PoseGraph();
+    if (opts.save_session.empty()) in.session.reset();
+  }
   ProgressBar bar(stderr, progressStyleFor(stderr, opts.progress), "swslam: ");
   SkipReporter skips(err, in.config.system.system.max_printed_warnings, "swslam: ");
   try
@@ -225,6 +247,36 @@ bool diagnose(const OfflineRunOptions& opts, const Opened& in, const Produced& p
   return true;
 }
 
+/** --save-session: the run's graph, keyframes and map with every node's observation (a
+ * resumed session's from its own folder, the others from this run's input). A run whose
+ * module failed is not saved. */
+void saveSession(const OfflineRunOptions& opts, const Opened& in, const Produced& p, const RunRecord& record,
+                 std::ostream& err, RunOutcome& outcome)
+{
+  if (!p.error.empty())
+  {
+    err << "swslam: no session saved: a module failed\n";
+    outcome.outputs_failed = true;
+    return;
+  }
+  try
+  {
+    std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> observations;
+    if (in.session) observations = in.session->resumed.observations;
+    std::vector<double> times;
+    for (const auto& k : p.results.keyframes) times.push_back(k.t);
+    const auto added = nodeObservationsFromLog(times, observations.size(), opts.input, record);
+    observations.insert(observations.end(), added.begin(), added.end());
+    writeSession(opts.save_session, record, p.results, p.grid, observations);
+    err << "swslam: session saved in " << opts.save_session << " (" << observations.size() << " nodes)\n";
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: " << e.what() << "\n";
+    outcome.outputs_failed = true;
+  }
+}
+
 /** Phase 4: the summary (Table I, with ATE and RPE against the ground truth) and every output,
  * replacing the folder's previous run as one. */
 void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::ostream& out, std::ostream& err,
@@ -255,6 +307,7 @@ void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::os
   record.max_scans = opts.max_scans;
   record.throttle_scans = opts.throttle_scans;
   record.config = in.config;
+  if (!opts.save_session.empty()) saveSession(opts, in, p, record, err, outcome);
   OutputFolder::Replaced written;
   try
   {

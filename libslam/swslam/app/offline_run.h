@@ -25,6 +25,8 @@ struct OfflineRunOptions
   size_t max_scans = 0;      ///< stop after this many scans; 0: all
   size_t throttle_scans = 1;  ///< use one scan in this many (io::ThrottledScanSource); 1: all
   double realtime_factor = 0;  ///< > 0: replay paced at this multiple of the log's own rate
+  std::string resume;        ///< a saved session to continue (app/session.h); its config is the run's
+  std::string save_session;  ///< where to save this run as a session; empty: not saved
 };
 
 /** Runs; prints the Table I summary to `out`, warnings and the progress bar to stderr. */
