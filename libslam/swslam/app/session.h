@@ -9,7 +9,8 @@
 //                   (graph/io.h; MRPT reads it)
 //   keyframes.tum   the nodes' stamps and optimized poses, node i on line i
 //   nodes.rawlog    each node's observation, in node order (MRPT rawlog: RawLogViewer opens it)
-//   map.gridmap.gz  the map (MRPT); a resumed run rebuilds it from the nodes, to the same grid
+//   map.gridmap.gz  the map (MRPT), for viewing; a resumed run maps the nodes again at their
+//                   optimized poses
 
 #include <swslam/app/run_record.h>
 #include <swslam/system/slam_system.h>

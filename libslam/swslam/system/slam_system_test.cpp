@@ -1,6 +1,7 @@
 // The whole system: deterministic repeatability, threaded tracking, loop closure, bad input.
 #include <swslam/eval/report.h>
 #include <swslam/io/scan_source.h>
+#include <swslam/map/builder.h>
 #include <swslam/system/slam_system.h>
 
 #include <gtest/gtest.h>
@@ -458,4 +459,50 @@ TEST(SlamSystem, AModuleThatFailsInDeterministicModeStopsThePipelineAsInThreaded
   const RunResults res = slam.results();
   EXPECT_EQ(res.trajectory.size(), 5u);
   EXPECT_GE(res.graph.nodeCount(), 1u);
+}
+
+TEST(SlamSystem, AResumedSessionMapsItsNodesAtTheirPosesAndGoesOnInBothModes)
+{
+  SlamSystem first(defaultParams(), RunMode::Deterministic);
+  feedLake(first, 300);
+  first.finish();
+  const RunResults saved = first.results();
+  // Each node's observation: the lake scan with its stamp.
+  ResumedSession session{saved.graph, {}};
+  auto src = io::openScanSource(kLake + ".rawlog", io::ScanSourceOptions{}, io::CarmenParams());
+  sensor::ScanInput in;
+  while (session.observations.size() < saved.keyframes.size() && src->next(in))
+    if (std::abs(mrpt::Clock::toDouble(in.observation->timestamp) - saved.keyframes[session.observations.size()].t) < 1e-5)
+      session.observations.push_back(in.observation);
+  ASSERT_EQ(session.observations.size(), saved.graph.nodeCount());
+  // The map a resumed run starts from: every node inserted at its optimized pose.
+  map::MapBuilder rebuilt(defaultParams().map);
+  for (size_t id = 0; id < session.observations.size(); id++)
+    rebuilt.insert(id, *session.observations[id], saved.graph.pose(id));
+
+  for (const RunMode mode : {RunMode::Deterministic, RunMode::Threaded})
+  {
+    SlamSystem resumed(defaultParams(), mode);
+    resumed.resume(session);
+    EXPECT_EQ(resumed.mapSnapshot().getRawMap(), rebuilt.snapshot().getRawMap());
+    EXPECT_EQ(resumed.mapSnapshot().getSizeX(), rebuilt.snapshot().getSizeX());
+    const RunResults before = resumed.results();
+    ASSERT_EQ(before.keyframes.size(), saved.keyframes.size());
+    for (size_t k = 0; k < saved.keyframes.size(); k++) EXPECT_EQ(before.keyframes[k].t, saved.keyframes[k].t);
+    // The scans after the session's: new nodes after its own, no failure.
+    auto rest = io::openScanSource(kLake + ".rawlog", io::ScanSourceOptions{}, io::CarmenParams());
+    for (size_t i = 0; i < 400 && rest->next(in); i++)
+      if (i >= 300) ASSERT_TRUE(resumed.feed(in).ok());
+    resumed.finish();
+    EXPECT_EQ(resumed.error(), "");
+    EXPECT_GT(resumed.results().graph.nodeCount(), saved.graph.nodeCount() + 5);
+    EXPECT_THROW(resumed.resume(session), std::logic_error);
+  }
+  SlamSystem short_of_one(defaultParams(), RunMode::Deterministic);
+  ResumedSession missing = session;
+  missing.observations.pop_back();
+  EXPECT_THROW(short_of_one.resume(missing), std::invalid_argument);
+  ResumedSession null_scan = session;
+  null_scan.observations[3].reset();
+  EXPECT_THROW(short_of_one.resume(null_scan), std::invalid_argument);
 }
