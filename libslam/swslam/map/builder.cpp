@@ -110,6 +110,18 @@ size_t MapBuilder::nodeCount() const
   return nodes_.size();
 }
 
+int32_t MapBuilder::cellSum(int x, int y) const
+{
+  std::lock_guard<std::mutex> lock(grid_mutex_);
+  return grid_.sum(x, y);
+}
+
+CellBox MapBuilder::cellBox() const
+{
+  std::lock_guard<std::mutex> lock(grid_mutex_);
+  return grid_.box();
+}
+
 size_t MapBuilder::bytes() const
 {
   std::lock_guard<std::mutex> write(write_mutex_);

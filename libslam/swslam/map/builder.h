@@ -63,6 +63,11 @@ class MapBuilder
   /** Pose at which node `id`'s scan is in the map. Throws for an unknown node. */
   mrpt::poses::CPose2D nodePose(MapNodeId id) const;
   size_t nodeCount() const;
+  /** The exact (unclamped) log-odds sum of global cell (x, y), floor(world / resolution); 0
+   * outside the grid. */
+  int32_t cellSum(int x, int y) const;
+  /** The grid's cells, global. */
+  CellBox cellBox() const;
   /** Memory held by the grid, the sums and the nodes' scans [bytes]. */
   size_t bytes() const;
 
