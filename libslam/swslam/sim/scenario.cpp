@@ -140,6 +140,21 @@ const common::ParamTable<OdometryParams>& OdometryParams::table()
   return t;
 }
 
+const common::ParamTable<ChangesParams>& ChangesParams::table()
+{
+  using P = ChangesParams;
+  static const auto t =
+      common::ParamTable<P>("changes", "The same world with rocks taken away and put (a later survey of a changed place).")
+          .integer("seed", &P::seed, "", kCount, "which rocks, and where")
+          .integer("remove", &P::remove, "", common::between(0, 1000), "rocks of radius >= 0.5 m taken away")
+          .integer("add", &P::add, "", common::between(0, 1000), "rocks put on the water")
+          .real("radius", &P::radius, "m", common::between(0.1, 10), "radius of the rocks put")
+          .real("min_distance", &P::min_distance, "m", common::between(0, 1000), "the band: at least this far from the path...")
+          .real("max_distance", &P::max_distance, "m", common::between(0, 1000), "...and at most this far")
+          .rule([](const P& p) { return p.min_distance < p.max_distance; }, "min_distance must be below max_distance");
+  return t;
+}
+
 namespace
 {
 /** Calls visit(table, parameters) for each section, in file order. */
@@ -185,6 +200,7 @@ std::string formatScenario(const Scenario& sc)
 {
   mrpt::config::CConfigFileMemory c;
   forEachSection(sc, [&](const auto& table, const auto& p) { table.save(p, c); });
+  if (sc.changes.any()) ChangesParams::table().save(sc.changes, c);
   std::string text;
   c.getContent(text);
   return text;
@@ -198,7 +214,7 @@ Scenario loadScenario(const std::string& path)
   {
     const auto file = common::readIniFile(path);
     const mrpt::config::CConfigFileBase& cfg = *file;
-    common::checkKnownSections(cfg, {"world", "terrain", "vegetation", "vehicle", "sensor", "odometry"});
+    common::checkKnownSections(cfg, {"world", "terrain", "vegetation", "vehicle", "sensor", "odometry", "changes"});
     Scenario sc;
     sc.name = std::filesystem::path(path).stem().string();
     // A misspelled key is named as such first, then a missing one.
@@ -207,6 +223,11 @@ Scenario loadScenario(const std::string& path)
       table.requireAll(cfg, {"noise_seed"});
     });
     if (!cfg.keyExists("world", "noise_seed")) sc.world.noise_seed = sc.world.seed;
+    if (cfg.sectionExists("changes"))
+    {
+      ChangesParams::table().load(cfg, sc.changes);
+      ChangesParams::table().requireAll(cfg);
+    }
     validateScenario(sc);
     return sc;
   }

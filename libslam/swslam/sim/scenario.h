@@ -106,6 +106,21 @@ struct OdometryParams
   static const common::ParamTable<OdometryParams>& table();
 };
 
+/** [changes] (optional section) The same world with rocks taken away and put: a later survey
+ * of a place that changed (doc/sessions.md, "What changed"). */
+struct ChangesParams
+{
+  unsigned seed = 1;
+  unsigned remove = 0;        ///< rocks of radius >= 0.5 m taken away, among those in the band below
+  unsigned add = 0;           ///< rocks put on the water, in the band
+  double radius = 0.75;       ///< [m] of the rocks put
+  double min_distance = 4;    ///< [m] the band: at least this far from the path...
+  double max_distance = 25;   ///< [m] ...and at most this far
+
+  bool any() const { return remove > 0 || add > 0; }
+  static const common::ParamTable<ChangesParams>& table();
+};
+
 struct Scenario
 {
   std::string name;  ///< output file stem
@@ -115,6 +130,7 @@ struct Scenario
   SensorParams sensor;
   VegetationParams vegetation;
   OdometryParams odometry;
+  ChangesParams changes;  ///< none unless the file has a [changes] section
 };
 
 /** Reads and checks a scenario file; the name is the file's stem. Throws

@@ -1,8 +1,10 @@
 #include <swslam/sim/simulator.h>
+
 #include <swslam/sim/scenario_check.h>
 
 #include <swslam/common/gzip_output.h>
 #include <swslam/common/tum_io.h>
+#include <swslam/sim/changes.h>
 #include <swslam/sim/grid.h>
 #include <swslam/sim/sensor.h>
 #include <swslam/sim/terrain.h>
@@ -45,8 +47,9 @@ SimulationSummary runSimulation(const Scenario& sc, const std::string& output_di
 {
   validateScenario(sc);
   const VehiclePath path(sc.vehicle.waypoints, sc.vehicle.closed, sc.vehicle.speed);
-  const World world = generateWorld(sc, path);
+  World world = generateWorld(sc, path);
   checkPathFits(sc, world, path);
+  const std::vector<WorldChange> changes = applyChanges(world, sc.changes, path);
   const ShapeGrid grid(world, sc.world.grid_cell);
 
   // Everything is checked: outputs from here on.
@@ -102,8 +105,10 @@ SimulationSummary runSimulation(const Scenario& sc, const std::string& output_di
   common::writeTum(base.string() + ".gt.tum", truth);
   writeMrptGroundTruth(base.string() + ".gt.txt", truth);
   writeWorldPicture(base.string() + "_world.png", world, path.samples());
-  for (const char* ext : {".rawlog", ".gt.tum", ".gt.txt", "_world.png"})
+  if (sc.changes.any()) writeChanges(base.string() + ".changes.csv", changes);
+  for (const char* ext : {".rawlog", ".gt.tum", ".gt.txt", "_world.png", ".changes.csv"})
   {
+    if (std::string(ext) == ".changes.csv" && !sc.changes.any()) continue;
     const std::string f = base.string() + ext;
     sum.files.emplace_back(f, fs::file_size(f));
   }
