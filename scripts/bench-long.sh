@@ -9,7 +9,10 @@
 #  2. the valley cut at its middle, the first half saved as a session (--save-session) and the
 #     second resumed from it twice (--resume): the ATE of the nodes and of the two halves'
 #     trajectories against the uninterrupted run's, and whether the two resumes are the same
-#     byte for byte (cutting needs rawlog-edit, from mrpt-apps).
+#     byte for byte (cutting needs rawlog-edit, from mrpt-apps);
+#  3. what changed: the valley saved as a session, then driven again with other sensor noise
+#     and three rocks taken away and three put (swslam-sim [changes], three draws), resumed:
+#     each change found or missed, and the false changes (scripts/score-changes.py).
 # Usage: scripts/bench-long.sh [LAPS]   (expects build/ from scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,7 +62,7 @@ half=$(( ${entries:-26296} / 2 ))
 rawlog-edit --cut --to-index $((half - 1)) -i datasets/valley/valley.rawlog -o "$s/first.rawlog" -w > /dev/null 2>&1
 rawlog-edit --cut --from-index "$half" -i datasets/valley/valley.rawlog -o "$s/second.rawlog" -w > /dev/null 2>&1
 run() { taskset -c 0 "$bin/swslam" -d -q --no-render "$@" > /dev/null 2>> "$s/runs.log"; }
-run -c config/default.ini -i datasets/valley/valley.rawlog -o "$s/whole"
+run -c config/default.ini -i datasets/valley/valley.rawlog -o "$s/whole" --save-session "$s/valley"
 run -c config/default.ini -i "$s/first.rawlog" -o "$s/first" --save-session "$s/saved"
 run -i "$s/second.rawlog" -o "$s/resumed-1" --resume "$s/saved"
 run -i "$s/second.rawlog" -o "$s/resumed-2" --resume "$s/saved"
@@ -73,3 +76,17 @@ same=yes
 for f in trajectory.tum keyframes.tum graph.graph map.gridmap.gz; do cmp -s "$s/resumed-1/$f" "$s/resumed-2/$f" || same="no ($f differs)"; done
 echo "two resumes byte for byte the same: $same"
 rm -f "$s"/*.rawlog
+
+echo "== 3. what changed: the valley again with three rocks taken away and three put, resumed from section 2's session"
+for draw in 1 2 3; do
+  awk -v d="$draw" '/^noise_seed/ { next } { print } /^seed *=/ { print "noise_seed = " 100 + d }' \
+    datasets/scenarios/valley.ini > "$s/changed-$draw.ini"
+  printf "\n[changes]\nseed = %d\nremove = 3\nadd = 3\nradius = 0.75\nmin_distance = 4\nmax_distance = 25\n" "$draw" \
+    >> "$s/changed-$draw.ini"
+  "$bin/swslam-sim" -q --scenario "$s/changed-$draw.ini" --output "$s/data-$draw" > /dev/null
+  run -i "$s/data-$draw/changed-$draw.rawlog" -o "$s/changed-$draw" --resume "$s/valley"
+  echo "draw $draw:"
+  /usr/bin/python3 scripts/score-changes.py datasets/valley/valley.gt.tum "$s/data-$draw/changed-$draw.changes.csv" \
+    "$s/changed-$draw/changes.md"
+  rm -rf "$s/data-$draw"
+done

@@ -13,6 +13,8 @@
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/io/scan_source.h>
 #include <swslam/io/throttled_scan_source.h>
+#include <swslam/map/builder.h>
+#include <swslam/map/change_detection.h>
 #include <swslam/system/slam_system.h>
 
 #include <algorithm>
@@ -161,9 +163,9 @@ Produced run(const OfflineRunOptions& opts, Opened& in, const StopSignal& stop, 
   if (in.session)
   {
     slam->resume(in.session->resumed);
-    // What a saved session needs of it again is its observations; the graph is the system's.
+    // What is needed of it again is its observations (the change report, a saved session);
+    // the graph is the system's now.
     in.session->resumed.graph = graph::PoseGraph();
-    if (opts.save_session.empty()) in.session.reset();
   }
   ProgressBar bar(stderr, progressStyleFor(stderr, opts.progress), "swslam: ");
   SkipReporter skips(err, in.config.system.system.max_printed_warnings, "swslam: ");
@@ -250,8 +252,9 @@ bool diagnose(const OfflineRunOptions& opts, const Opened& in, const Produced& p
 /** --save-session: the run's graph, keyframes and map with every node's observation (a
  * resumed session's from its own folder, the others from this run's input). A run whose
  * module failed is not saved. */
-void saveSession(const OfflineRunOptions& opts, const Opened& in, const Produced& p, const RunRecord& record,
-                 std::ostream& err, RunOutcome& outcome)
+void saveSession(const OfflineRunOptions& opts, const Produced& p, const RunRecord& record,
+                 const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& observations, std::ostream& err,
+                 RunOutcome& outcome)
 {
   if (!p.error.empty())
   {
@@ -261,12 +264,6 @@ void saveSession(const OfflineRunOptions& opts, const Opened& in, const Produced
   }
   try
   {
-    std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> observations;
-    if (in.session) observations = in.session->resumed.observations;
-    std::vector<double> times;
-    for (const auto& k : p.results.keyframes) times.push_back(k.t);
-    const auto added = nodeObservationsFromLog(times, observations.size(), opts.input, record);
-    observations.insert(observations.end(), added.begin(), added.end());
     writeSession(opts.save_session, record, p.results, p.grid, observations);
     err << "swslam: session saved in " << opts.save_session << " (" << observations.size() << " nodes)\n";
   }
@@ -275,6 +272,43 @@ void saveSession(const OfflineRunOptions& opts, const Opened& in, const Produced
     err << "swslam: " << e.what() << "\n";
     outcome.outputs_failed = true;
   }
+}
+
+/** Every node's observation: a resumed session's from its folder, the others from this run's
+ * input; none (said) if the input does not give them back. */
+std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> nodeObservations(const OfflineRunOptions& opts, const Opened& in,
+                                                                      const Produced& p, const RunRecord& record,
+                                                                      std::ostream& err, RunOutcome& outcome)
+{
+  std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> observations;
+  if (in.session) observations = in.session->resumed.observations;
+  std::vector<double> times;
+  for (const auto& k : p.results.keyframes) times.push_back(k.t);
+  try
+  {
+    const auto added = nodeObservationsFromLog(times, observations.size(), opts.input, record);
+    observations.insert(observations.end(), added.begin(), added.end());
+    return observations;
+  }
+  catch (const std::exception& e)
+  {
+    err << "swslam: " << e.what() << "; no session saved and no change report\n";
+    outcome.outputs_failed = true;
+    return {};
+  }
+}
+
+/** A resumed run: what its scans show that the session's did not, and the reverse: the rays
+ * of the session's nodes and of this run's, each counted alone at their final poses, compared. */
+std::optional<map::ChangeReport> changesSinceSession(const Opened& in, const Produced& p,
+                                                    const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& observations)
+{
+  if (!in.session || observations.size() != p.results.graph.nodeCount()) return std::nullopt;
+  const size_t saved = in.session->resumed.observations.size();
+  map::SurveyEvidence before(in.config.system.map), after(in.config.system.map);
+  for (size_t id = 0; id < observations.size(); id++)
+    (id < saved ? before : after).insert(id, *observations[id], p.results.graph.pose(id));
+  return map::detectChanges(before, after);
 }
 
 /** Phase 4: the summary (Table I, with ATE and RPE against the ground truth) and every output,
@@ -307,12 +341,18 @@ void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::os
   record.max_scans = opts.max_scans;
   record.throttle_scans = opts.throttle_scans;
   record.config = in.config;
-  if (!opts.save_session.empty()) saveSession(opts, in, p, record, err, outcome);
+  std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> observations;
+  if ((in.session || !opts.save_session.empty()) && p.error.empty())
+    observations = nodeObservations(opts, in, p, record, err, outcome);
+  if (!opts.save_session.empty() && !observations.empty()) saveSession(opts, p, record, observations, err, outcome);
+  const std::optional<map::ChangeReport> changes = changesSinceSession(in, p, observations);
   OutputFolder::Replaced written;
   try
   {
     written = in.folder->replaceRun(runOutputFiles(), [&](const std::string& dir) {
-      return writeRunOutputs(dir, p.results, p.grid, in.config.system.map, text, runRecordText(record), opts.render);
+      auto problems = writeRunOutputs(dir, p.results, p.grid, in.config.system.map, text, runRecordText(record), opts.render);
+      if (changes) writeChangeOutputs(dir, p.grid, overlayOf(p.results), *changes, problems);
+      return problems;
     });
   }
   catch (const std::exception& e)
@@ -327,6 +367,9 @@ void write(const OfflineRunOptions& opts, Opened& in, const Produced& p, std::os
     err << "swslam: the previous run's outputs in " << opts.output << " are kept; what this run wrote is in "
         << (std::filesystem::path(opts.output) / OutputFolder::kUnfinished).string() << "/\n";
   outcome.outputs_failed = !written.problems.empty();
+  if (changes)
+    out << "# changes since the session: " << changes->count(map::ChangeKind::Appeared) << " appeared, "
+        << changes->count(map::ChangeKind::Disappeared) << " disappeared (changes.md, changes.png)\n";
   out << text
       << outputsLine(written.kept_previous ? (std::filesystem::path(opts.output) / OutputFolder::kUnfinished).string()
                                            : opts.output,

@@ -4,6 +4,7 @@
 
 #include <swslam/common/atomic_file.h>
 #include <swslam/eval/report.h>
+#include <swslam/map/change_picture.h>
 #include <swslam/graph/io.h>
 
 #include <algorithm>
@@ -13,6 +14,12 @@
 
 namespace swslam::app
 {
+namespace
+{
+constexpr const char* kChangeTable = "changes.md";
+constexpr const char* kChangePicture = "changes.png";
+}  // namespace
+
 system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,
                         const std::vector<common::StampedPose>* ground_truth, double max_dt)
 {
@@ -91,10 +98,33 @@ map::Overlay overlayOf(const system::RunResults& results)
   return in;
 }
 
+void writeChangeOutputs(const std::string& dir, const mrpt::maps::COccupancyGridMap2D& grid, const map::Overlay& overlay,
+                        const map::ChangeReport& changes, std::vector<map::OutputProblem>& problems)
+{
+  const std::filesystem::path d(dir);
+  try
+  {
+    common::writeTextAtomically((d / kChangeTable).string(), map::formatChangeReport(changes));
+  }
+  catch (const std::exception& e)
+  {
+    problems.push_back({kChangeTable, e.what()});
+  }
+  try
+  {
+    map::writeChangePicture(grid, overlay, changes, (d / kChangePicture).string());
+  }
+  catch (const std::exception& e)
+  {
+    problems.push_back({kChangePicture, e.what()});
+  }
+}
+
 std::vector<std::string> runOutputFiles()
 {
   return {"map.gridmap.gz", "map.png", "map.yaml", "map.pgm", "map.bt", "render.png",
-          "trajectory.tum", "keyframes.tum", "graph.graph", "stats.csv", "summary.md", kRunRecordFile};
+          "trajectory.tum", "keyframes.tum", "graph.graph", "stats.csv", "summary.md", kRunRecordFile,
+          kChangeTable, kChangePicture};
 }
 
 std::string outputsLine(const std::string& dir, bool render)
@@ -103,7 +133,7 @@ std::string outputsLine(const std::string& dir, bool render)
   std::string shown, missing;
   for (const std::string& name : runOutputFiles())
   {
-    if (name == "render.png" && !render) continue;
+    if ((name == "render.png" && !render) || name == kChangeTable || name == kChangePicture) continue;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(std::filesystem::path(dir) / name, ec))
       missing += (missing.empty() ? "" : ", ") + name;

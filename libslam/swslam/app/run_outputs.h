@@ -5,6 +5,7 @@
 // outputs of writeMapOutputs (map.gridmap.gz, map.png, map.yaml + map.pgm, map.bt,
 // render.png).
 
+#include <swslam/map/change_detection.h>
 #include <swslam/map/outputs.h>
 #include <swslam/system/slam_system.h>
 
@@ -20,12 +21,19 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
                                            const map::MapParams& map_params, const std::string& summary,
                                            const std::string& run_record, bool render = true);
 
-/** The files writeRunOutputs writes (render.png included), by name. */
+/** A resumed run's change report (doc/sessions.md): changes.md and changes.png into `dir`;
+ * a file that cannot be written is added to `problems`. */
+void writeChangeOutputs(const std::string& dir, const mrpt::maps::COccupancyGridMap2D& grid, const map::Overlay& overlay,
+                        const map::ChangeReport& changes, std::vector<map::OutputProblem>& problems);
+
+/** The files writeRunOutputs and writeChangeOutputs write (render.png and the change report
+ * included), by name. */
 std::vector<std::string> runOutputFiles();
 
 /** The run's last line: "# outputs in DIR/ (map.png, render.png, trajectory.tum, stats.csv,
  * summary.md)", naming only those of them that are in `dir`, and "; not written: ..." every
- * output (of runOutputFiles, render.png only if `render`) that is not. */
+ * output (of runOutputFiles, render.png only if `render`, the change report never: only a
+ * resumed run writes it) that is not. */
 std::string outputsLine(const std::string& dir, bool render);
 
 /** Table I figures of a run; with a ground truth, also ATE and RPE (poses associated within

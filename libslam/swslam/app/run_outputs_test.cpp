@@ -73,7 +73,11 @@ TEST(RunOutputs, EveryFileWrittenIsNamedByRunOutputFiles)
   const std::string dir = test::tempDir("run_outputs");
   const system::RunResults r = straightRunWithJitter();
   mrpt::maps::COccupancyGridMap2D grid(-5, 15, -5, 5, 0.1);
-  const auto problems = app::writeRunOutputs(dir, r, grid, map::MapParams(), "# summary\n", "[run]\n", false);
+  auto problems = app::writeRunOutputs(dir, r, grid, map::MapParams(), "# summary\n", "[run]\n", false);
+  // A resumed run's change report too.
+  map::ChangeReport changes;
+  changes.resolution = 0.1;
+  app::writeChangeOutputs(dir, grid, map::Overlay(), changes, problems);
   EXPECT_TRUE(problems.empty());
   std::set<std::string> written, named;
   for (const auto& e : std::filesystem::directory_iterator(dir)) written.insert(e.path().filename().string());

@@ -116,6 +116,11 @@ TEST(Session, AResumedRunContinuesTheSessionsGraphTheSameEachTime)
     trajectories[k] = readText(o.output + "/trajectory.tum");
   }
   EXPECT_EQ(trajectories[0], trajectories[1]);
+  // A resumed run reports what changed since the session (lake-short's bank did not move);
+  // a run that resumed nothing does not.
+  EXPECT_NE(readText(dir + "/out0/changes.md").find("Compared "), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(dir + "/out0/changes.png"));
+  EXPECT_FALSE(fs::exists(fs::path(savedSession()).parent_path() / "out" / "changes.md"));
   EXPECT_EQ(readText(dir + "/out0/graph.graph"), readText(dir + "/out1/graph.graph"));
 
   // The session's nodes first, as saved, then the new ones; the trajectory is this run's scans.
