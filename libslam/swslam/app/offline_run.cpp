@@ -139,6 +139,16 @@ bool open(const OfflineRunOptions& opts, Opened& in, std::ostream& err)
                            io::ScanSourceOptions{opts.use_odometry, opts.sensor_label, opts.scan_topic, opts.odom_topic},
                            in.config.carmen),
         opts.throttle_scans);
+    if (!opts.save_session.empty())
+    {
+      // A session takes its folder's place whole: the run's outputs there would go with it.
+      const auto session = std::filesystem::weakly_canonical(std::filesystem::absolute(opts.save_session));
+      const auto output = std::filesystem::weakly_canonical(std::filesystem::absolute(opts.output));
+      const auto [end, _] = std::mismatch(session.begin(), session.end(), output.begin(), output.end());
+      if (end == session.end())
+        throw std::invalid_argument("--save-session " + opts.save_session + " holds the output folder " + opts.output +
+                                    ": a session replaces its whole folder; save it elsewhere");
+    }
     in.folder.emplace(opts.output);
     if (in.folder->staleRemoved() > 0)
       err << "swslam: removed " << in.folder->staleRemoved() << " temporary file(s) that a killed run left in "

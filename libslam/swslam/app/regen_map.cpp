@@ -12,13 +12,16 @@ namespace swslam::app
 mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
                                               const std::vector<common::StampedPose>& keyframes,
                                               const std::string& log_path, const map::MapParams& params,
-                                              const io::CarmenParams& carmen, RegenReport* report)
+                                              const io::CarmenParams& carmen, const io::ScanSourceOptions& scans,
+                                              RegenReport* report)
 {
   if (keyframes.size() != graph.nodeCount())
     throw std::runtime_error("regen-map: " + std::to_string(keyframes.size()) + " keyframes but " +
                              std::to_string(graph.nodeCount()) + " graph nodes (not the same run?)");
   map::MapBuilder builder(params);
-  auto source = io::openScanSource(log_path, io::ScanSourceOptions{false, "", "", ""}, carmen);
+  io::ScanSourceOptions options = scans;
+  options.use_odometry = false;
+  auto source = io::openScanSource(log_path, options, carmen);
   sensor::ScanInput in;
   size_t next = 0;  // keyframes are in time order: one pass over the log
   while (next < keyframes.size() && source->next(in))

@@ -5,6 +5,7 @@
 #include <swslam/common/tum_io.h>
 #include <swslam/graph/pose_graph.h>
 #include <swslam/io/carmen_log.h>
+#include <swslam/io/scan_source.h>
 #include <swslam/map/params.h>
 #include <swslam/system/scan_stats.h>
 
@@ -22,13 +23,15 @@ struct RegenReport
 };
 
 /** Inserts, for each graph node, the log's scan stamped with that node's time in
- * `keyframes` (the run's keyframes.tum, node i on line i) at the node's graph pose. Throws
+ * `keyframes` (the run's keyframes.tum, node i on line i) at the node's graph pose; the log is
+ * read with `scans` (the run's sensor and topics; odometry is not read). Throws
  * std::runtime_error naming the problem if the keyframes and the graph disagree, or if a
  * node's scan is missing from the log. */
 mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
                                               const std::vector<common::StampedPose>& keyframes,
                                               const std::string& log_path, const map::MapParams& params,
-                                              const io::CarmenParams& carmen, RegenReport* report = nullptr);
+                                              const io::CarmenParams& carmen, const io::ScanSourceOptions& scans,
+                                              RegenReport* report = nullptr);
 
 /** The run's stats.csv rows for its pictures (overlayOf marks the scans the prediction
  * placed), if there is one row per pose of its `trajectory_poses`-pose trajectory. Otherwise

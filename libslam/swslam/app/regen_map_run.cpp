@@ -59,12 +59,27 @@ system::RunResults loadRun(const std::string& dir, std::ostream& err)
   return run;
 }
 
-/** The run's record (run.ini), read when an option is left to it; none if the run has none. */
+/** The run's record (run.ini); none if the run has none, which is an error only if the input
+ * is left to it. */
 std::optional<RunRecord> recordFor(const RegenMapOptions& o)
 {
   const std::string path = (std::filesystem::path(o.run) / kRunRecordFile).string();
-  if (!o.input.empty() && !o.config.empty()) return std::nullopt;
-  if (std::filesystem::exists(path)) return readRunRecord(path);
+  if (std::filesystem::exists(path))
+  {
+    // With the input and config given, the record only names the sensor: a damaged one is not needed.
+    if (!o.input.empty() && !o.config.empty())
+    {
+      try
+      {
+        return readRunRecord(path);
+      }
+      catch (const std::invalid_argument&)
+      {
+        return std::nullopt;
+      }
+    }
+    return readRunRecord(path);
+  }
   if (o.input.empty())
     throw std::invalid_argument("no input log: '" + path + "' is missing (a run before run.ini was written); give the log with -i");
   return std::nullopt;
@@ -81,7 +96,10 @@ int runRegenMap(const RegenMapOptions& o, std::ostream& out, std::ostream& err)
     const map::MapParams params = mapParams(loaded, o.resolution);
     const system::RunResults run = loadRun(o.run, err);
     RegenReport report;
-    const auto grid = regenerateMap(run.graph, run.keyframes, input, params, loaded.carmen, &report);
+    // The run's sensor and topics, when its record names them and the log is its own.
+    io::ScanSourceOptions scans{false, "", "", ""};
+    if (record && input == record->input) scans = {false, record->sensor_label, record->scan_topic, record->odom_topic};
+    const auto grid = regenerateMap(run.graph, run.keyframes, input, params, loaded.carmen, scans, &report);
     const auto problems = map::writeMapOutputs(o.output, grid, params, overlayOf(run), o.render);
     for (const auto& p : problems) err << "swslam-regen-map: " << p.file << ": " << p.message << "\n";
     out << report.inserted << " of " << report.nodes << " node scans inserted at " << params.resolution

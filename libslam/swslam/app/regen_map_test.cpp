@@ -28,26 +28,26 @@ TEST(RegenMap, RebuildsTheRunsMapAtAFinerResolution)
   // Same resolution: every node inserted at its final pose; the online map holds nodes at
   // poses within the re-insertion threshold of those, so the two agree almost everywhere.
   RegenReport report;
-  const auto same = regenerateMap(run.graph, run.keyframes, log, params.map, io::CarmenParams(), &report);
+  const auto same = regenerateMap(run.graph, run.keyframes, log, params.map, io::CarmenParams(), io::ScanSourceOptions(), &report);
   EXPECT_EQ(report.inserted, run.graph.nodeCount());
   const double occ = map::countOccupied(online, params.map.occupied_thresh);
   EXPECT_NEAR(map::countOccupied(same, params.map.occupied_thresh), occ, 0.1 * occ);
 
   map::MapParams fine = params.map;
   fine.resolution = 0.1;
-  const auto offline = regenerateMap(run.graph, run.keyframes, log, fine, io::CarmenParams());
+  const auto offline = regenerateMap(run.graph, run.keyframes, log, fine, io::CarmenParams(), io::ScanSourceOptions());
   EXPECT_NEAR(offline.getResolution(), 0.1, 1e-6);
   EXPECT_GT(map::countOccupied(offline, fine.occupied_thresh), 1.5 * occ);
 
   // Keyframes of another run: an error naming the problem.
   auto wrong = run.keyframes;
   wrong.pop_back();
-  EXPECT_THROW(regenerateMap(run.graph, wrong, log, params.map, io::CarmenParams()), std::runtime_error);
+  EXPECT_THROW(regenerateMap(run.graph, wrong, log, params.map, io::CarmenParams(), io::ScanSourceOptions()), std::runtime_error);
   wrong = run.keyframes;
   wrong.back().t += 0.0123;
   try
   {
-    regenerateMap(run.graph, wrong, log, params.map, io::CarmenParams());
+    regenerateMap(run.graph, wrong, log, params.map, io::CarmenParams(), io::ScanSourceOptions());
     FAIL() << "no error";
   }
   catch (const std::runtime_error& e)

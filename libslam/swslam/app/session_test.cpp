@@ -188,6 +188,16 @@ TEST(Session, ADamagedSessionOrAConfigBesideItIsANamedErrorAndNothingIsWritten)
                 "resolutio");
   expectRefused(savedSession(), "-c is not allowed", std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   expectRefused(dir + "/nowhere", "session.ini is missing");
+  // Saving a session over the output folder (or a folder holding it) would take the outputs.
+  for (const std::string& over : {dir + "/out-over", dir})
+  {
+    OfflineRunOptions o = laserOnly(split().second, dir + "/out-over");
+    o.save_session = over;
+    std::ostringstream out, err;
+    EXPECT_EQ(runOffline(o, out, err), kExitUsage) << err.str();
+    EXPECT_NE(err.str().find("holds the output folder"), std::string::npos) << err.str();
+    EXPECT_FALSE(fs::exists(dir + "/out-over"));
+  }
 }
 
 TEST(Session, ASessionIsReplacedOnlyByAWholeOne)
