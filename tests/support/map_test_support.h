@@ -2,6 +2,9 @@
 // Helpers shared by the map tests: hand-made scans and cell-by-cell grid comparison.
 
 #include <swslam/map/params.h>
+#include <swslam/map/scan_contribution.h>
+
+#include <gtest/gtest.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -63,6 +66,20 @@ inline size_t differingCells(const mrpt::maps::COccupancyGridMap2D& a,
   for (int y = y0; y < y1; y++)
     for (int x = x0; x < x1; x++) n += at(a, x, y) != at(b, x, y);
   return n;
+}
+
+/** `a` has the runs (row, first cell, length) and deltas of `b`, which is not empty. */
+inline void expectSameContribution(const map::ScanContribution& a, const map::ScanContribution& b)
+{
+  ASSERT_FALSE(b.runs.empty());
+  ASSERT_EQ(a.runs.size(), b.runs.size());
+  for (size_t k = 0; k < b.runs.size(); k++)
+  {
+    EXPECT_EQ(a.runs[k].y, b.runs[k].y) << "run " << k;
+    EXPECT_EQ(a.runs[k].x0, b.runs[k].x0) << "run " << k;
+    EXPECT_EQ(a.runs[k].length, b.runs[k].length) << "run " << k;
+  }
+  EXPECT_EQ(a.deltas, b.deltas);
 }
 
 }  // namespace swslam::test
