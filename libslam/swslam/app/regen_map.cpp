@@ -1,9 +1,9 @@
 #include <swslam/app/regen_map.h>
 
+#include <swslam/app/session.h>
 #include <swslam/io/scan_source.h>
 #include <swslam/map/builder.h>
 
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -19,27 +19,15 @@ mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
     throw std::runtime_error("regen-map: " + std::to_string(keyframes.size()) + " keyframes but " +
                              std::to_string(graph.nodeCount()) + " graph nodes (not the same run?)");
   map::MapBuilder builder(params);
-  io::ScanSourceOptions options = scans;
-  options.use_odometry = false;
-  auto source = io::openScanSource(log_path, options, carmen);
-  sensor::ScanInput in;
-  size_t next = 0;  // keyframes are in time order: one pass over the log
-  while (next < keyframes.size() && source->next(in))
-  {
-    const double t = mrpt::Clock::toDouble(in.observation->timestamp);
-    if (std::abs(t - keyframes[next].t) > 1e-5) continue;
-    if (!graph.hasNode(next)) throw std::runtime_error("regen-map: the graph has no node " + std::to_string(next));
-    builder.insert(next, *in.observation, graph.pose(next));
-    next++;
-  }
-  if (next < keyframes.size())
-  {
-    char buf[200];
-    std::snprintf(buf, sizeof(buf), "regen-map: node %zu's scan (t = %.6f s) is not in '%s'", next,
-                  keyframes[next].t, log_path.c_str());
-    throw std::runtime_error(buf);
-  }
-  if (report) *report = RegenReport{graph.nodeCount(), next};
+  std::vector<double> times;
+  for (const auto& k : keyframes) times.push_back(k.t);
+  visitNodeScans(times, 0, log_path, scans, carmen, "regen-map",
+                 [&](size_t id, const mrpt::obs::CObservation2DRangeScan::Ptr& obs) {
+                   if (!graph.hasNode(id)) throw std::runtime_error("regen-map: the graph has no node " + std::to_string(id));
+                   builder.insert(id, *obs, graph.pose(id));
+                 });
+  // Every node's scan was found (visitNodeScans throws otherwise).
+  if (report) *report = RegenReport{graph.nodeCount(), graph.nodeCount()};
   return builder.snapshot();
 }
 

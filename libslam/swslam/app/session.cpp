@@ -183,25 +183,35 @@ Session readSession(const std::string& dir)
   return s;
 }
 
+void visitNodeScans(const std::vector<double>& times, size_t first, const std::string& log,
+                    const io::ScanSourceOptions& scans, const io::CarmenParams& carmen, const std::string& what,
+                    const std::function<void(size_t, const mrpt::obs::CObservation2DRangeScan::Ptr&)>& visit)
+{
+  if (first >= times.size()) return;
+  io::ScanSourceOptions options = scans;
+  options.use_odometry = false;
+  auto source = io::openScanSource(log, options, carmen);
+  sensor::ScanInput in;
+  size_t next = first;
+  while (next < times.size() && source->next(in))
+  {
+    if (std::abs(mrpt::Clock::toDouble(in.observation->timestamp) - times[next]) > kSameStamp) continue;
+    visit(next, in.observation);
+    next++;
+  }
+  if (next < times.size())
+    throw std::runtime_error(what + ": node " + std::to_string(next) + "'s scan (t = " + stampText(times[next]) +
+                             " s) is not in '" + log + "'");
+}
+
 std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> nodeObservationsFromLog(const std::vector<double>& times,
                                                                            size_t first, const std::string& log,
                                                                            const RunRecord& how)
 {
   std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> out;
-  if (first >= times.size()) return out;
-  auto source = io::openScanSource(log, io::ScanSourceOptions{false, how.sensor_label, how.scan_topic, how.odom_topic},
-                                   how.config.carmen);
-  sensor::ScanInput in;
-  size_t next = first;  // the nodes are in time order: one pass over the log
-  while (next < times.size() && source->next(in))
-  {
-    if (std::abs(mrpt::Clock::toDouble(in.observation->timestamp) - times[next]) > kSameStamp) continue;
-    out.push_back(in.observation);
-    next++;
-  }
-  if (next < times.size())
-    throw std::runtime_error("session: node " + std::to_string(next) + "'s scan (t = " + stampText(times[next]) +
-                             " s) is not in '" + log + "'");
+  visitNodeScans(times, first, log, io::ScanSourceOptions{false, how.sensor_label, how.scan_topic, how.odom_topic},
+                 how.config.carmen, "session",
+                 [&](size_t, const mrpt::obs::CObservation2DRangeScan::Ptr& obs) { out.push_back(obs); });
   return out;
 }
 

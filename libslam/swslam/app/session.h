@@ -13,11 +13,13 @@
 //                   optimized poses
 
 #include <swslam/app/run_record.h>
+#include <swslam/io/scan_source.h>
 #include <swslam/system/slam_system.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +48,14 @@ void writeSession(const std::string& dir, const RunRecord& record, const system:
  * disagree (graph nodes, keyframes, observations), an observation whose stamp is not its
  * node's. */
 Session readSession(const std::string& dir);
+
+/** Calls visit(id, observation) for each node id in [first, times.size()) with the scan of
+ * `log` (opened with `scans`, odometry not read) stamped times[id], in one pass: the nodes are
+ * in time order. Throws std::runtime_error naming the first node whose scan the log does not
+ * hold (`what` starts the message). */
+void visitNodeScans(const std::vector<double>& times, size_t first, const std::string& log,
+                    const io::ScanSourceOptions& scans, const io::CarmenParams& carmen, const std::string& what,
+                    const std::function<void(size_t, const mrpt::obs::CObservation2DRangeScan::Ptr&)>& visit);
 
 /** The observations of the nodes stamped `times[first..]`, taken from `log` (opened as the
  * run opened it) in one pass: the scan with each node's stamp, in order. Throws
