@@ -8,10 +8,12 @@ Config loadConfig(const mrpt::config::CConfigFileBase& cfg, const std::vector<st
 {
   std::vector<std::string> others = other_sections;
   others.push_back(io::CarmenParams::table().section());
+  others.push_back(localize::LocalizationParams::table().section());
   others.push_back("run");  // a run's record (run_record.h) is a configuration too
   Config c;
   c.system = system::loadSystemParams(cfg, others);
   io::CarmenParams::table().load(cfg, c.carmen);
+  localize::LocalizationParams::table().load(cfg, c.localization);
   return c;
 }
 

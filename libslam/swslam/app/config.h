@@ -1,10 +1,12 @@
 #pragma once
 // The whole file a program reads with -c (config/default.ini, doc/configuration.md): the
-// system's sections (system/config.h) and the input's, [carmen]; written as the two shipped
+// system's sections (system/config.h), the input's, [carmen], and swslam-localize's,
+// [localization]; written as the two shipped
 // files, config/default.ini (the user's keys) and config/expert.ini (the rest).
 
 #include <swslam/common/param_table.h>
 #include <swslam/io/carmen_params.h>
+#include <swslam/localize/params.h>
 #include <swslam/system/config.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -18,6 +20,7 @@ struct Config
 {
   system::SystemParams system;
   io::CarmenParams carmen;  ///< [carmen]: how CARMEN logs are read
+  localize::LocalizationParams localization;  ///< [localization]: swslam-localize
 
   /** Calls visit(table, parameters) for each section, in file order. */
   template <class C, class Visit>
@@ -25,6 +28,7 @@ struct Config
   {
     system::SystemParams::forEachSection(c.system, visit);
     visit(io::CarmenParams::table(), c.carmen);
+    visit(localize::LocalizationParams::table(), c.localization);
   }
 };
 

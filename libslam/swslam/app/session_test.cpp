@@ -7,8 +7,6 @@
 #include <swslam/app/session.h>
 #include <swslam/common/tum_io.h>
 #include <swslam/graph/io.h>
-#include <swslam/io/rawlog_recorder.h>
-#include <swslam/io/scan_source.h>
 
 #include <gtest/gtest.h>
 
@@ -18,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include "log_cut_support.h"
 #include "test_support.h"
 
 using namespace swslam;
@@ -27,19 +26,6 @@ namespace fs = std::filesystem;
 namespace
 {
 constexpr size_t kFirstScans = 400, kSecondScans = 400;
-
-/** lake-short's scans [from, from + count) as a rawlog of observations (no odometry). */
-std::string cutLakeShort(const std::string& path, size_t from, size_t count)
-{
-  auto source = io::openScanSource(std::string(SWSLAM_SOURCE_DIR) + "/datasets/lake-short/lake-short.rawlog",
-                                   io::ScanSourceOptions{false, "", "", ""}, io::CarmenParams());
-  io::RawlogRecorder out(path, std::chrono::hours(1));
-  sensor::ScanInput in;
-  for (size_t k = 0; k < from + count && source->next(in); k++)
-    if (k >= from) out.write(*in.observation);
-  out.flush();
-  return path;
-}
 
 struct Split
 {
@@ -51,8 +37,8 @@ const Split& split()
   static const Split s = [] {
     Split s;
     s.dir = test::tempDir("session_split");
-    s.first = cutLakeShort(s.dir + "/first.rawlog", 0, kFirstScans);
-    s.second = cutLakeShort(s.dir + "/second.rawlog", kFirstScans, kSecondScans);
+    s.first = test::cutLakeShort(s.dir + "/first.rawlog", 0, kFirstScans);
+    s.second = test::cutLakeShort(s.dir + "/second.rawlog", kFirstScans, kSecondScans);
     return s;
   }();
   return s;

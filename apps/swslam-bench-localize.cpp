@@ -1,0 +1,37 @@
+// swslam-bench-localize: localization on a saved map scored against reference poses
+// (doc/localization.md, Figures; scripts/bench-localize.sh).
+#include "cli.h"
+#include "programs.h"
+#include "run_in_library.h"
+
+int main(int argc, char** argv)
+{
+  TCLAP::CmdLine cmd("swslam-bench-localize: localization on a saved map against reference poses", ' ', "0.1");
+  TCLAP::ValueArg<std::string> map("m", "map", "A saved session or a swslam run folder", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> map_truth("", "map-truth", "Reference poses (TUM) of the map's run", true, "", "TUM",
+                                         cmd);
+  TCLAP::ValueArg<std::string> input("i", "input", "Log to localize", true, "", "LOG", cmd);
+  TCLAP::ValueArg<std::string> truth("t", "truth", "Its reference poses (TUM)", true, "", "TUM", cmd);
+  TCLAP::ValueArg<std::string> elsewhere("", "elsewhere", "A log of another place, which must stay lost", false, "",
+                                         "LOG", cmd);
+  TCLAP::ValueArg<size_t> starts("", "starts", "Random starts", false, 100, "N", cmd);
+  TCLAP::ValueArg<unsigned> seed("", "seed", "Seed of the random starts", false, 1, "N", cmd);
+  TCLAP::ValueArg<double> window("", "window", "Log time a start has to relocalize in [s]", false, 2.0, "S", cmd);
+  TCLAP::ValueArg<double> follow("", "follow", "Log time tracked and scored after a relocalization [s]", false, 5.0,
+                                 "S", cmd);
+  TCLAP::SwitchArg no_odometry("", "no-odometry", "Ignore the log's odometry", cmd);
+  if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
+
+  swslam::app::BenchLocalizeOptions o;
+  o.map = map.getValue();
+  o.map_truth = map_truth.getValue();
+  o.input = input.getValue();
+  o.truth = truth.getValue();
+  o.elsewhere = elsewhere.getValue();
+  o.starts = starts.getValue();
+  o.seed = seed.getValue();
+  o.window = window.getValue();
+  o.follow = follow.getValue();
+  o.use_odometry = !no_odometry.getValue();
+  return SWSLAM_RUN_IN_LIBRARY("swslam-bench-localize", swslam_run_bench_localize, o);
+}

@@ -1,0 +1,70 @@
+#include <swslam/localize/map_nodes.h>
+
+#include <swslam/geometry/se2_error.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace swslam::localize
+{
+using mrpt::poses::CPose2D;
+
+MapNodes::MapNodes(const std::vector<CPose2D>& poses, std::vector<sensor::Scan> scans,
+                   const plicp::PlicpParams& plicp)
+    : poses_(poses), store_(plicp)
+{
+  if (poses.size() != scans.size())
+    throw std::invalid_argument("map nodes: " + std::to_string(poses.size()) + " poses but " +
+                                std::to_string(scans.size()) + " scans");
+  if (poses.empty()) throw std::invalid_argument("map nodes: the map has no node");
+  mounts_.reserve(scans.size());
+  for (size_t id = 0; id < scans.size(); ++id)
+  {
+    mounts_.push_back(scans[id].sensor_pose);
+    store_.add(id, std::make_shared<const plicp::ReferenceScan>(std::move(scans[id]), plicp));
+  }
+}
+
+size_t MapNodes::nearest(const CPose2D& sensor_pose, double rotation_length) const
+{
+  size_t best = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (size_t id = 0; id < poses_.size(); ++id)
+  {
+    const CPose2D s = sensorPose(id);
+    const double cost = std::hypot(s.x() - sensor_pose.x(), s.y() - sensor_pose.y()) +
+                        rotation_length * std::abs(geometry::wrapAngle(s.phi() - sensor_pose.phi()));
+    if (cost < best_cost)
+    {
+      best_cost = cost;
+      best = id;
+    }
+  }
+  return best;
+}
+
+std::vector<correlative::Ray> MapNodes::raysAround(size_t id, double radius, double max_range) const
+{
+  const CPose2D centre = sensorPose(id);
+  const CPose2D to_centre = -centre;
+  std::vector<correlative::Ray> out;
+  for (size_t k = 0; k < poses_.size(); ++k)
+  {
+    const CPose2D s = sensorPose(k);
+    if (std::hypot(s.x() - centre.x(), s.y() - centre.y()) > radius) continue;
+    const CPose2D t = to_centre + s;
+    const Eigen::Vector2d origin(t.x(), t.y());
+    for (const auto& p : store_.get(k)->scan.points)
+    {
+      if (p.norm() > max_range) continue;
+      double x, y;
+      t.composePoint(p.x(), p.y(), x, y);
+      out.push_back({origin, {x, y}});
+    }
+  }
+  return out;
+}
+
+}  // namespace swslam::localize
