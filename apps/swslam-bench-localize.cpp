@@ -14,7 +14,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> truth("t", "truth", "Its reference poses (TUM)", true, "", "TUM", cmd);
   TCLAP::ValueArg<std::string> elsewhere("", "elsewhere", "A log of another place, which must stay lost", false, "",
                                          "LOG", cmd);
-  TCLAP::ValueArg<size_t> starts("", "starts", "Random starts", false, 100, "N", cmd);
+  TCLAP::ValueArg<size_t> starts("", "starts", "Random starts (0: none)", false, 100, "N", cmd);
   TCLAP::ValueArg<unsigned> seed("", "seed", "Seed of the random starts", false, 1, "N", cmd);
   TCLAP::ValueArg<double> window("", "window", "Log time a start has to relocalize in [s]", false, 2.0, "S", cmd);
   TCLAP::ValueArg<double> follow("", "follow", "Log time tracked and scored after a relocalization [s]", false, 5.0,

@@ -170,6 +170,7 @@ int runBenchLocalize(const BenchLocalizeOptions& o, std::ostream& out, std::ostr
     }
 
     // 2. Random starts: a fresh localizer at a random scan, no initial pose.
+    if (o.starts > 0)
     {
       std::mt19937 rng(o.seed);
       const double span = o.window + o.follow;

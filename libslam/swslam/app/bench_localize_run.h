@@ -17,7 +17,7 @@ struct BenchLocalizeOptions
   std::string input;      ///< the log localized
   std::string truth;      ///< its TUM reference poses (a pose per scan, by stamp)
   std::string elsewhere;  ///< a log of another place (empty: not run)
-  size_t starts = 100;    ///< random starts
+  size_t starts = 100;    ///< random starts (0: none)
   unsigned seed = 1;
   double window = 2.0;    ///< [s] of log a start has to relocalize in
   double follow = 5.0;    ///< [s] of log tracked after a relocalization, scored

@@ -1,0 +1,62 @@
+#pragma once
+// One localization run on a saved map (doc/localization.md), whatever feeds it: a log
+// (swslam-localize) or a live sensor (swslam-live --localize). It holds the map's nodes, the
+// whole-map search and the localizer, localizes each scan fed to it, keeps one row per scan,
+// and writes the run's outputs: localization.tum, localization.csv and summary.md.
+
+#include <swslam/app/config.h>
+#include <swslam/app/saved_map.h>
+#include <swslam/localize/localizer.h>
+#include <swslam/map/outputs.h>
+#include <swslam/sensor/scan_input.h>
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swslam::app
+{
+class LocalizationSession
+{
+ public:
+  /** Localizes on `saved` (read with readSavedMap from `map_dir`) with `config`; from
+   * `initial_pose` if given, else by relocalization. Throws std::invalid_argument naming a
+   * node whose scan fails the input's geometry check, or a map with no occupied cell. */
+  LocalizationSession(const SavedMap& saved, const std::string& map_dir, const Config& config,
+                      const std::optional<mrpt::poses::CPose2D>& initial_pose);
+  ~LocalizationSession();
+
+  /** Localizes one scan; a scan whose geometry fails the input check is skipped and counted
+   * (the first one's reason is returned in `skipped_reason`, later ones' not). */
+  const localize::LocalizedScan* feed(const sensor::ScanInput& in, std::string* skipped_reason = nullptr);
+
+  size_t scans() const { return rows_.size(); }
+  bool anyLocalized() const;
+  /** The state of the last scan (lost before the first). */
+  localize::LocalizationState lastState() const;
+
+  /** summary.md's text (without its title), for `input`. */
+  std::string summary(const std::string& input) const;
+  /** Writes the outputs into `dir`, each atomically; the ones that failed. */
+  std::vector<map::OutputProblem> write(const std::string& dir, const std::string& input) const;
+  static const std::vector<std::string>& outputFiles();
+
+ private:
+  struct Row
+  {
+    double t = 0;
+    localize::LocalizedScan scan;
+    double ms = 0;  ///< processing time
+  };
+  std::string map_line_;  ///< the map, described
+  std::unique_ptr<localize::MapNodes> nodes_;
+  std::unique_ptr<localize::Relocalizer> relocalizer_;
+  std::unique_ptr<localize::Localizer> localizer_;
+  std::vector<Row> rows_;
+  size_t skipped_ = 0;
+};
+
+}  // namespace swslam::app
