@@ -75,10 +75,9 @@ void Localizer::setInitialPose(const CPose2D& pose)
   last_matched_time_.reset();
 }
 
-Localizer::NodeMatch Localizer::matchNode(const tracking::PreparedScan& scan, const CPose2D& vehicle_guess,
-                                          bool measured)
+Localizer::NodeMatch Localizer::matchNode(const tracking::PreparedScan& scan, const CPose2D& mount,
+                                          const CPose2D& vehicle_guess, bool measured)
 {
-  const CPose2D mount = scan.scan().sensor_pose;
   const CPose2D sensor_guess = vehicle_guess + mount;
   NodeMatch out;
   out.node = nodes_.nearest(sensor_guess, scan.rotationLength());
@@ -105,16 +104,15 @@ Localizer::NodeMatch Localizer::matchNode(const tracking::PreparedScan& scan, co
   return out;
 }
 
-std::optional<Localizer::NodeMatch> Localizer::relocalize(const tracking::PreparedScan& scan, double& search_score)
+std::optional<Localizer::NodeMatch> Localizer::relocalize(const tracking::PreparedScan& scan, const CPose2D& mount)
 {
   const auto points =
       correlative::thinPoints(scan.scan().points, relocalizer_.resolution(), std::numeric_limits<double>::infinity());
   const auto place = relocalizer_.find(points);
-  search_score = place ? place->score : 0.0;
   if (!place || !place->distinct) return std::nullopt;
   const CPose2D sensor(place->pose.x(), place->pose.y(), place->pose.z());
-  const CPose2D guess = sensor + (-scan.scan().sensor_pose);
-  NodeMatch m = matchNode(scan, guess, true);
+  const CPose2D guess = sensor + (-mount);
+  NodeMatch m = matchNode(scan, mount, guess, true);
   if (!m.good) return std::nullopt;
   // The match confirms the place only if it stays in the search's cell: a match that slid
   // away found something else than the search did.
@@ -125,9 +123,9 @@ std::optional<Localizer::NodeMatch> Localizer::relocalize(const tracking::Prepar
   return m;
 }
 
-double Localizer::mapScore(const tracking::PreparedScan& scan, const CPose2D& vehicle) const
+double Localizer::mapScore(const tracking::PreparedScan& scan, const CPose2D& mount, const CPose2D& vehicle) const
 {
-  const CPose2D sensor = vehicle + scan.scan().sensor_pose;
+  const CPose2D sensor = vehicle + mount;
   const auto points =
       correlative::thinPoints(scan.scan().points, relocalizer_.resolution(), std::numeric_limits<double>::infinity());
   return correlative::scoreAt(relocalizer_.grid(), points, {sensor.x(), sensor.y(), sensor.phi()});
@@ -136,8 +134,10 @@ double Localizer::mapScore(const tracking::PreparedScan& scan, const CPose2D& ve
 LocalizedScan Localizer::localize(const sensor::ScanInput& input)
 {
   const double t = mrpt::Clock::toDouble(input.observation->timestamp);
-  const tracking::PreparedScan scan(
-      sensor::scanFromCheckedObservation(*input.observation, params_.tracking.min_range), forms_);
+  sensor::Scan s = sensor::scanFromCheckedObservation(*input.observation, params_.tracking.min_range);
+  const CPose2D mount = s.sensor_pose;
+  nodes_.asMapSensor(s);
+  const tracking::PreparedScan scan(std::move(s), forms_);
   LocalizedScan out;
   out.valid_rays = scan.scan().size();
   const double interval = last_time_ ? t - *last_time_ : 0.0;
@@ -151,7 +151,7 @@ LocalizedScan Localizer::localize(const sensor::ScanInput& input)
     else if (last_interval_ && *last_interval_ > 0 && interval > 0)
       motion = geometry::scaledMotion(last_motion_, std::clamp(interval / *last_interval_, 0.25, 4.0));
     const CPose2D guess = pose_ + motion;
-    const NodeMatch m = matchNode(scan, guess, true);
+    const NodeMatch m = matchNode(scan, mount, guess, true);
     out.node = m.node;
     out.inlier_fraction = m.inlier_fraction;
     if (!last_matched_time_) last_matched_time_ = t;  // an initial pose counts as matched
@@ -186,8 +186,7 @@ LocalizedScan Localizer::localize(const sensor::ScanInput& input)
     {
       last_search_time_ = t;
       out.searched_map = true;
-      double score = 0;
-      m = relocalize(scan, score);
+      m = relocalize(scan, mount);
     }
     if (m)
     {
@@ -208,7 +207,7 @@ LocalizedScan Localizer::localize(const sensor::ScanInput& input)
       out.inlier_fraction = 0;
     }
   }
-  if (out.state != LocalizationState::Lost) out.map_score = mapScore(scan, out.pose);
+  if (out.state != LocalizationState::Lost) out.map_score = mapScore(scan, mount, out.pose);
   last_interval_ = interval > 0 ? std::optional<double>(interval) : last_interval_;
   last_time_ = t;
   return out;

@@ -80,12 +80,13 @@ class Localizer
     double inlier_fraction = 0;
     bool good = false;             ///< converged, not unmatched, enough inliers
   };
-  NodeMatch matchNode(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& vehicle_guess,
-                      bool measured);
+  NodeMatch matchNode(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+                      const mrpt::poses::CPose2D& vehicle_guess, bool measured);
   /** The whole-map search and its verification; none if the place is not distinct or the
    * match does not confirm it. */
-  std::optional<NodeMatch> relocalize(const tracking::PreparedScan& scan, double& search_score);
-  double mapScore(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& vehicle) const;
+  std::optional<NodeMatch> relocalize(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount);
+  double mapScore(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+                  const mrpt::poses::CPose2D& vehicle) const;
 
   const MapNodes& nodes_;
   const Relocalizer& relocalizer_;

@@ -122,3 +122,23 @@ TEST(Localizer, UnmatchedForLostAfterSecondsIsLostThenRelocalizes)
   EXPECT_EQ(r.state, localize::LocalizationState::Relocalized);
   EXPECT_NEAR(r.pose.x(), path[1].x(), 0.03);
 }
+
+TEST(Localizer, AnotherSensorLabelAndMountingMatchTheMap)
+{
+  // The map's scans are LASER's (simulateObservation's label), 541 rays mounted 0.3 m ahead; the
+  // log's come from a scanner named otherwise, mounted elsewhere, with fewer rays.
+  Fixture f;
+  localize::Localizer loc(f.nodes, f.relocalizer, f.params);
+  std::mt19937 rng(15);
+  const CPose2D mount(-0.2, 0.1, 0.3), vehicle(-3, 1.5, 0.4);
+  auto obs = std::make_shared<mrpt::obs::CObservation2DRangeScan>(
+      test::simulateObservation(test::roomWorld(), vehicle + mount, 361, 1.5 * M_PI, 30, 0.01, rng));
+  obs->sensorLabel = "HOKUYO_UTM";
+  obs->sensorPose = mrpt::poses::CPose3D(mount);
+  obs->timestamp = mrpt::Clock::fromDouble(6000);
+  const auto r = loc.localize({obs, std::nullopt});
+  ASSERT_EQ(r.state, localize::LocalizationState::Relocalized);
+  EXPECT_NEAR(r.pose.x(), vehicle.x(), 0.03);
+  EXPECT_NEAR(r.pose.y(), vehicle.y(), 0.03);
+  EXPECT_NEAR(r.pose.phi(), vehicle.phi(), 0.005);
+}

@@ -19,12 +19,23 @@ MapNodes::MapNodes(const std::vector<CPose2D>& poses, std::vector<sensor::Scan> 
     throw std::invalid_argument("map nodes: " + std::to_string(poses.size()) + " poses but " +
                                 std::to_string(scans.size()) + " scans");
   if (poses.empty()) throw std::invalid_argument("map nodes: the map has no node");
+  label_ = scans.front().sensor_label;
+  beam_count_ = scans.front().beam_count;
+  aperture_ = scans.front().aperture;
   mounts_.reserve(scans.size());
   for (size_t id = 0; id < scans.size(); ++id)
   {
     mounts_.push_back(scans[id].sensor_pose);
     store_.add(id, std::make_shared<const plicp::ReferenceScan>(std::move(scans[id]), plicp));
   }
+}
+
+void MapNodes::asMapSensor(sensor::Scan& scan) const
+{
+  scan.sensor_label = label_;
+  scan.beam_count = beam_count_;
+  scan.aperture = aperture_;
+  scan.sensor_pose = mounts_.front();
 }
 
 size_t MapNodes::nearest(const CPose2D& sensor_pose, double rotation_length) const

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace swslam::localize
@@ -34,12 +35,22 @@ class MapNodes
    * `rotation_length` times the heading difference (a turn moves the points that much). */
   size_t nearest(const mrpt::poses::CPose2D& sensor_pose, double rotation_length) const;
 
+  /** Gives `scan` the map's sensor's identity (node 0's label, beam count, aperture and
+   * mounting), which PLICP requires of the two scans it matches (plicp.h): a log of the same
+   * scanner under another label, or of another 2D scanner, matches the map's nodes. The match
+   * is between the two sensors' own frames, so the scan's points are what counts; the caller
+   * keeps the scan's own mounting for its vehicle pose. */
+  void asMapSensor(sensor::Scan& scan) const;
+
   /** The rays, up to max_range, of the nodes whose sensor is within `radius` of node id's, in
    * node id's sensor frame: a search's reference around that node. */
   std::vector<correlative::Ray> raysAround(size_t id, double radius, double max_range) const;
 
  private:
   std::vector<mrpt::poses::CPose2D> poses_, mounts_;
+  std::string label_;
+  size_t beam_count_ = 0;
+  double aperture_ = 0;
   plicp::ReferenceStore store_;
 };
 
