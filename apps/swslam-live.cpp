@@ -22,6 +22,10 @@ int main(int argc, char** argv)
   TCLAP::SwitchArg deterministic("d", "deterministic", "Run the system on the reading thread", cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "No status line", cmd);
   TCLAP::SwitchArg no_render("", "no-render", "Skip render.png", cmd);
+  TCLAP::ValueArg<std::string> localize("", "localize",
+                                        "Localize on this saved session or run folder instead of mapping "
+                                        "(doc/localization.md; the config defaults to the map's run.ini)",
+                                        false, "", "DIR", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
   swslam::app::LiveRunOptions o;
@@ -36,5 +40,6 @@ int main(int argc, char** argv)
   o.deterministic = deterministic.getValue();
   o.status = !quiet.getValue();
   o.render = !no_render.getValue();
+  o.localize = localize.getValue();
   return SWSLAM_RUN_IN_LIBRARY("swslam-live", swslam_run_live, o);
 }

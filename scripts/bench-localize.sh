@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 bin=build/apps
 [[ -x $bin/swslam-bench-localize ]] || { echo "bench-localize: no $bin/swslam-bench-localize; run scripts/build.sh first" >&2; exit 2; }
 [[ -f datasets/valley/valley.rawlog ]] || bash scripts/gen-datasets.sh valley
-out=out/bench-localize
+out=$PWD/out/bench-localize
 rm -rf "$out" && mkdir -p "$out"
 
 taskset -c 0 "$bin/swslam" -c config/default.ini -i datasets/valley/valley.rawlog -o "$out/map" -d -q --no-render \
@@ -61,7 +61,7 @@ pf_ini local 5000 1 -0.5 0.5 -0.5 0.5 -10 10
 for run in global local; do
   echo "-- pf-localization, $([[ $run == global ]] && echo "no initial pose (50,000 particles over the free cells)" \
     || echo "start known to +-0.5 m, +-10 deg (5,000 particles)")"
-  (cd "$out" && taskset -c 0 pf-localization "pf-$run.ini" > "pf-$run.log" 2>&1)
+  (cd "$out" && taskset -c 0 pf-localization "pf-$run.ini" < /dev/null > "pf-$run.log" 2>&1)
   /usr/bin/python3 scripts/pf-errors.py "$out/pf-$run.log" "$out/session/keyframes.tum" datasets/valley/valley.gt.tum \
     "$truth" "$(awk '!/^#/ { print $1; exit }' "$truth")" 40
 done
