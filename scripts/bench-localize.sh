@@ -6,7 +6,10 @@
 #     reference poses (swslam-bench-localize): the whole log from its first scan, 100 random
 #     starts each given 2 s of log to relocalize in, and lake-short, another place, which must
 #     stay lost; with the odometry and laser only;
-#  2. side by side with MRPT's pf-localization on the same map and the first 30 s of the same
+#  2. what changed: the valley again with three rocks taken away and three put (swslam-sim
+#     [changes], three draws, as bench-long.sh section 3), localized on the session: each
+#     change found or missed, and the false changes (scripts/score-changes.py);
+#  3. side by side with MRPT's pf-localization on the same map and the first 30 s of the same
 #     log: from no initial pose (50,000 particles over the map's free cells) and from a start
 #     known to +-0.5 m and +-10 deg (5,000 particles); scored by scripts/pf-errors.py (needs
 #     mrpt-apps and python3-numpy). pf-localization takes some ten minutes.
@@ -36,7 +39,23 @@ echo "-- laser only"
 taskset -c 0 "$bin/swslam-bench-localize" "${common[@]}" --no-odometry
 
 echo
-echo "== 2. side by side with MRPT's pf-localization: the first 30 s of the same log, the same map"
+echo "== 2. what changed: the valley with three rocks taken away and three put, localized on the session"
+for draw in 1 2 3; do
+  awk -v d="$draw" '/^noise_seed/ { next } { print } /^seed *=/ { print "noise_seed = " 100 + d }' \
+    datasets/scenarios/valley.ini > "$out/changed-$draw.ini"
+  printf "\n[changes]\nseed = %d\nremove = 3\nadd = 3\nradius = 0.75\nmin_distance = 4\nmax_distance = 25\n" "$draw" \
+    >> "$out/changed-$draw.ini"
+  "$bin/swslam-sim" -q --scenario "$out/changed-$draw.ini" --output "$out/data-$draw" > /dev/null
+  taskset -c 0 "$bin/swslam-localize" -m "$out/session" -i "$out/data-$draw/changed-$draw.rawlog" \
+    -o "$out/changed-$draw" > /dev/null
+  echo "draw $draw:"
+  /usr/bin/python3 scripts/score-changes.py datasets/valley/valley.gt.tum "$out/data-$draw/changed-$draw.changes.csv" \
+    "$out/changed-$draw/changes.md"
+  rm -rf "$out/data-$draw"
+done
+
+echo
+echo "== 3. side by side with MRPT's pf-localization: the first 30 s of the same log, the same map"
 if ! command -v pf-localization > /dev/null || ! command -v rawlog-edit > /dev/null; then
   echo "skipped: needs pf-localization and rawlog-edit (apt-get install mrpt-apps)"
   exit 0

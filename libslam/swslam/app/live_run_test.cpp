@@ -6,6 +6,7 @@
 #include <swslam/app/live_run.h>
 #include <swslam/app/offline_run.h>
 #include <swslam/app/output_folder.h>
+#include <swslam/common/tum_io.h>
 #include <swslam/eval/report.h>
 #include <swslam/io/rawlog_reader.h>
 #include <swslam/sim/scenario.h>
@@ -21,6 +22,7 @@
 #include <tuple>
 #include <vector>
 
+#include "log_cut_support.h"
 #include "test_support.h"
 
 using namespace swslam;
@@ -243,5 +245,42 @@ TEST(LiveRun, ASensorThatNeverAnswersLeavesThePreviousRunsOutputsAsTheyWere)
     std::getline(in, text);
     EXPECT_EQ(text, "a previous run's " + f);
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(LiveRun, LocalizesOnASavedMapInsteadOfMapping)
+{
+  // The map: the first 10 s of lake-short (the emulator's scenario) mapped offline, a run folder.
+  const std::string dir = test::tempDir("live_localize");
+  OfflineRunOptions map;
+  map.config = kSrc + "/config/default.ini";
+  map.input = test::cutLakeShort(dir + "/first.rawlog", 0, 400);
+  map.output = dir + "/map";
+  map.deterministic = true;
+  map.render = false;
+  map.progress = false;
+  std::ostringstream mout, merr;
+  ASSERT_EQ(runOffline(map, mout, merr), kExitOk) << merr.str();
+
+  const auto source = lakeSource();
+  scip::ScipEmulator emu(source, options());
+  LiveRunOptions o = liveOptions(dir, emu.port(), 5);
+  o.localize = map.output;
+  std::ostringstream out, err;
+  ASSERT_EQ(runLive(o, out, err), kExitOk) << err.str();
+  EXPECT_NE(out.str().find("# swslam-live --localize"), std::string::npos) << out.str();
+  const auto sent = emu.sentScans();
+  const auto poses = common::readTum(o.output + "/localization.tum");
+  ASSERT_GT(poses.size(), 100u) << out.str();
+  EXPECT_FALSE(std::filesystem::exists(o.output + "/trajectory.tum"));  // no mapping
+  // Every scan received placed (the first relocalized on the map), as the map's first pose
+  // sees the emulator's truth; the emulator may have sent one more as the run stopped.
+  ASSERT_EQ(poses.size(), countScans(o.output + "/recording.rawlog")) << out.str();
+  ASSERT_LE(poses.size(), sent.size());
+  const mrpt::poses::CPose2D origin = source.pose(0);
+  double worst = 0;
+  for (size_t i = 0; i < poses.size(); ++i)
+    worst = std::max(worst, (poses[i].pose - ((-origin) + source.pose(sent[i].k))).norm());
+  EXPECT_LT(worst, 0.1);
   std::filesystem::remove_all(dir);
 }

@@ -1,5 +1,6 @@
 #include <swslam/app/localization_session.h>
 
+#include <swslam/app/run_outputs.h>
 #include <swslam/common/atomic_file.h>
 #include <swslam/common/tum_io.h>
 #include <swslam/sensor/scan.h>
@@ -57,9 +58,16 @@ LocalizationSession::LocalizationSession(const SavedMap& saved, const std::strin
       localizer_(std::make_unique<localize::Localizer>(
           *nodes_, *relocalizer_,
           localize::LocalizerParams{config.localization, config.system.plicp, config.system.tracking,
-                                    config.system.correlative}))
+                                    config.system.correlative})),
+      grid_(saved.grid),
+      before_(config.system.map),
+      after_(config.system.map),
+      keyframe_translation_(config.system.tracking.keyframe_translation),
+      keyframe_rotation_(config.system.tracking.keyframe_rotation)
 {
   if (initial_pose) localizer_->setInitialPose(*initial_pose);
+  for (size_t id = 0; id < saved.observations.size(); ++id)
+    before_.insert(id, *saved.observations[id], saved.poses[id]);
 }
 
 LocalizationSession::~LocalizationSession() = default;
@@ -81,8 +89,20 @@ const localize::LocalizedScan* LocalizationSession::feed(const sensor::ScanInput
   r.scan = localizer_->localize(in);
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   rows_.push_back(r);
-  return &rows_.back().scan;
+  // A scan the map's match placed counts for the change report, at a keyframe's spacing.
+  const auto& l = rows_.back().scan;
+  const bool matched = l.state == LocalizationState::Tracked || l.state == LocalizationState::Relocalized;
+  if (matched && (!last_counted_ || ((-*last_counted_) + l.pose).norm() > keyframe_translation_ ||
+                  std::abs(((-*last_counted_) + l.pose).phi()) > keyframe_rotation_))
+  {
+    after_.insert(counted_poses_.size(), *in.observation, l.pose);
+    counted_poses_.push_back(l.pose);
+    last_counted_ = l.pose;
+  }
+  return &l;
 }
+
+map::ChangeReport LocalizationSession::changes() const { return map::detectChanges(before_, after_); }
 
 bool LocalizationSession::anyLocalized() const
 {
@@ -132,12 +152,17 @@ std::string LocalizationSession::summary(const std::string& input) const
     s << "whole-map searches: " << searches << ", mean " << search_sum / searches << " ms, max " << search_max
       << " ms\n";
   if (tracks > 0) s << "tracking: mean " << track_sum / tracks << " ms a scan, max " << track_max << " ms\n";
+  const map::ChangeReport c = changes();
+  s << "changes since the map: " << c.count(map::ChangeKind::Appeared) << " appeared, "
+    << c.count(map::ChangeKind::Disappeared) << " disappeared, over " << c.compared_cells
+    << " cells both saw (changes.md, changes.png)\n";
   return s.str();
 }
 
 const std::vector<std::string>& LocalizationSession::outputFiles()
 {
-  static const std::vector<std::string> files = {"localization.tum", "localization.csv", "summary.md"};
+  static const std::vector<std::string> files = {"localization.tum", "localization.csv", "summary.md", kChangeTable,
+                                                 kChangePicture};
   return files;
 }
 
@@ -178,6 +203,10 @@ std::vector<map::OutputProblem> LocalizationSession::write(const std::string& di
   attempt("localization.csv", [&](const std::string& p) { common::writeTextAtomically(p, csv.str()); });
   attempt("summary.md",
           [&](const std::string& p) { common::writeTextAtomically(p, "# swslam-localize\n\n" + summary(input)); });
+  map::Overlay overlay;
+  overlay.nodes = counted_poses_;
+  for (const auto& p : poses) overlay.trajectory.push_back(p.pose);
+  writeChangeOutputs(dir, grid_, overlay, changes(), problems);
   return problems;
 }
 

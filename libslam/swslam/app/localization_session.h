@@ -2,11 +2,13 @@
 // One localization run on a saved map (doc/localization.md), whatever feeds it: a log
 // (swslam-localize) or a live sensor (swslam-live --localize). It holds the map's nodes, the
 // whole-map search and the localizer, localizes each scan fed to it, keeps one row per scan,
-// and writes the run's outputs: localization.tum, localization.csv and summary.md.
+// counts the rays of the scans it placed by a match for the change report, and writes the
+// run's outputs: localization.tum, localization.csv, summary.md, changes.md and changes.png.
 
 #include <swslam/app/config.h>
 #include <swslam/app/saved_map.h>
 #include <swslam/localize/localizer.h>
+#include <swslam/map/change_detection.h>
 #include <swslam/map/outputs.h>
 #include <swslam/sensor/scan_input.h>
 
@@ -38,6 +40,9 @@ class LocalizationSession
   /** The state of the last scan (lost before the first). */
   localize::LocalizationState lastState() const;
 
+  /** Where the scans placed so far contradict the map (doc/sessions.md, What changed). */
+  map::ChangeReport changes() const;
+
   /** summary.md's text (without its title), for `input`. */
   std::string summary(const std::string& input) const;
   /** Writes the outputs into `dir`, each atomically; the ones that failed. */
@@ -55,6 +60,13 @@ class LocalizationSession
   std::unique_ptr<localize::MapNodes> nodes_;
   std::unique_ptr<localize::Relocalizer> relocalizer_;
   std::unique_ptr<localize::Localizer> localizer_;
+  mrpt::maps::COccupancyGridMap2D grid_;  ///< the map's grid, under the change picture
+  /** The map nodes' rays, and those of the scans placed by a match, one at least
+   * [tracking] keyframe_translation or keyframe_rotation from the last one counted. */
+  map::SurveyEvidence before_, after_;
+  std::optional<mrpt::poses::CPose2D> last_counted_;
+  double keyframe_translation_ = 0, keyframe_rotation_ = 0;
+  std::vector<mrpt::poses::CPose2D> counted_poses_;
   std::vector<Row> rows_;
   size_t skipped_ = 0;
 };

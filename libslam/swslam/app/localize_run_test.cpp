@@ -133,6 +133,10 @@ TEST(LocalizeRun, ALogIsLocalizedOnASessionWithNoInitialPose)
   std::ostringstream out, err;
   ASSERT_EQ(runLocalize(options(mapped().session, mapped().part, out_dir), out, err), kExitOk) << err.str();
   EXPECT_NE(out.str().find("first localized: scan 0,"), std::string::npos) << out.str();
+  // The map's own log again: nothing changed.
+  EXPECT_NE(out.str().find("changes since the map: 0 appeared, 0 disappeared"), std::string::npos) << out.str();
+  EXPECT_TRUE(fs::is_regular_file(out_dir + "/changes.md"));
+  EXPECT_TRUE(fs::is_regular_file(out_dir + "/changes.png"));
   const auto states = csvStates(out_dir + "/localization.csv");
   ASSERT_EQ(states.size(), 250u);
   EXPECT_EQ(states.front(), "relocalized");

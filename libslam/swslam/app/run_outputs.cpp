@@ -14,12 +14,6 @@
 
 namespace swslam::app
 {
-namespace
-{
-constexpr const char* kChangeTable = "changes.md";
-constexpr const char* kChangePicture = "changes.png";
-}  // namespace
-
 system::RunSummary summarizeRun(const system::RunResults& results, double wall_time,
                         const std::vector<common::StampedPose>* ground_truth, double max_dt)
 {

@@ -21,8 +21,12 @@ std::vector<map::OutputProblem> writeRunOutputs(const std::string& dir, const sy
                                            const map::MapParams& map_params, const std::string& summary,
                                            const std::string& run_record, bool render = true);
 
-/** A resumed run's change report (doc/sessions.md): changes.md and changes.png into `dir`;
- * a file that cannot be written is added to `problems`. */
+/** The change report's files (doc/sessions.md, What changed). */
+inline constexpr const char* kChangeTable = "changes.md";
+inline constexpr const char* kChangePicture = "changes.png";
+
+/** A resumed or localized run's change report (doc/sessions.md): changes.md and changes.png
+ * into `dir`; a file that cannot be written is added to `problems`. */
 void writeChangeOutputs(const std::string& dir, const mrpt::maps::COccupancyGridMap2D& grid, const map::Overlay& overlay,
                         const map::ChangeReport& changes, std::vector<map::OutputProblem>& problems);
 
