@@ -41,11 +41,7 @@ taskset -c 0 "$bin/swslam-bench-localize" "${common[@]}" --no-odometry
 echo
 echo "== 2. what changed: the valley with three rocks taken away and three put, localized on the session"
 for draw in 1 2 3; do
-  awk -v d="$draw" '/^noise_seed/ { next } { print } /^seed *=/ { print "noise_seed = " 100 + d }' \
-    datasets/scenarios/valley.ini > "$out/changed-$draw.ini"
-  printf "\n[changes]\nseed = %d\nremove = 3\nadd = 3\nradius = 0.75\nmin_distance = 4\nmax_distance = 25\n" "$draw" \
-    >> "$out/changed-$draw.ini"
-  "$bin/swslam-sim" -q --scenario "$out/changed-$draw.ini" --output "$out/data-$draw" > /dev/null
+  bash scripts/changed-valley.sh "$draw" "$out"
   taskset -c 0 "$bin/swslam-localize" -m "$out/session" -i "$out/data-$draw/changed-$draw.rawlog" \
     -o "$out/changed-$draw" > /dev/null
   echo "draw $draw:"

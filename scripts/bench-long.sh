@@ -79,11 +79,7 @@ rm -f "$s"/*.rawlog
 
 echo "== 3. what changed: the valley again with three rocks taken away and three put, resumed from section 2's session"
 for draw in 1 2 3; do
-  awk -v d="$draw" '/^noise_seed/ { next } { print } /^seed *=/ { print "noise_seed = " 100 + d }' \
-    datasets/scenarios/valley.ini > "$s/changed-$draw.ini"
-  printf "\n[changes]\nseed = %d\nremove = 3\nadd = 3\nradius = 0.75\nmin_distance = 4\nmax_distance = 25\n" "$draw" \
-    >> "$s/changed-$draw.ini"
-  "$bin/swslam-sim" -q --scenario "$s/changed-$draw.ini" --output "$s/data-$draw" > /dev/null
+  bash scripts/changed-valley.sh "$draw" "$s"
   run -i "$s/data-$draw/changed-$draw.rawlog" -o "$s/changed-$draw" --resume "$s/valley"
   echo "draw $draw:"
   /usr/bin/python3 scripts/score-changes.py datasets/valley/valley.gt.tum "$s/data-$draw/changed-$draw.changes.csv" \
