@@ -25,7 +25,7 @@ int main(int argc, char** argv)
   TCLAP::ValueArg<std::string> sensor("", "sensor", "Use only scans of this sensor label", false, "", "LABEL", cmd);
   TCLAP::ValueArg<std::string> scan_topic("", "scan-topic", "Bags: the LaserScan topic", false, "", "TOPIC", cmd);
   TCLAP::ValueArg<std::string> odom_topic("", "odom-topic", "Bags: the Odometry topic", false, "", "TOPIC", cmd);
-  TCLAP::ValueArg<size_t> max_scans("", "max-scans", "Stop after this many scans (0: all)", false, 0, "N", cmd);
+  TCLAP::ValueArg<long long> max_scans("", "max-scans", "Stop after this many scans (0: all)", false, 0, "N", cmd);
   if (const auto code = swslam::cli::parse(cmd, argc, argv)) return *code;
 
   swslam::app::LocalizeOptions o;
@@ -37,7 +37,15 @@ int main(int argc, char** argv)
   o.sensor_label = sensor.getValue();
   o.scan_topic = scan_topic.getValue();
   o.odom_topic = odom_topic.getValue();
-  o.max_scans = max_scans.getValue();
+  try
+  {
+    o.max_scans = swslam::cli::count(max_scans, 0);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    std::cerr << "swslam-localize: " << e.what() << "\n";
+    return 1;
+  }
   if (initial.isSet())
   {
     std::istringstream s(initial.getValue());

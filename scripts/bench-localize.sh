@@ -9,16 +9,23 @@
 #  2. what changed: the valley again with three rocks taken away and three put (swslam-sim
 #     [changes], three draws, as bench-long.sh section 3), localized on the session: each
 #     change found or missed, and the false changes (scripts/score-changes.py);
-#  3. side by side with MRPT's pf-localization on the same map and the first 30 s of the same
-#     log: from no initial pose (50,000 particles over the map's free cells) and from a start
-#     known to +-0.5 m and +-10 deg (5,000 particles); scored by scripts/pf-errors.py (needs
-#     mrpt-apps and python3-numpy). pf-localization takes some ten minutes.
-# Usage: scripts/bench-localize.sh   (expects build/ from scripts/build.sh)
+#  3. a real outdoor log: the UAL campus loop (SICK, 361 rays, 81 m; ../shared/datasets) mapped
+#     with its odometry over its first two thirds and saved as a session, then the whole log
+#     localized on it: the states of its scans (the last third leaves the map and comes back to
+#     its start), against the session's own trajectory and against the whole log's run
+#     (scripts/localization-errors.py);
+#  4. side by side with MRPT's pf-localization on the same map and the first 30 s of the same
+#     log: from no initial pose (50,000 particles over the map's free cells; three runs, its
+#     particles drawn anew each run) and from a start known to +-0.5 m and +-10 deg (5,000
+#     particles); scored by scripts/pf-errors.py (needs mrpt-apps and python3-numpy).
+#     pf-localization takes some ten minutes.
+# Usage: scripts/bench-localize.sh [UAL_RAWLOG]   (expects build/ from scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/apps
 [[ -x $bin/swslam-bench-localize ]] || { echo "bench-localize: no $bin/swslam-bench-localize; run scripts/build.sh first" >&2; exit 2; }
 [[ -f datasets/valley/valley.rawlog ]] || bash scripts/gen-datasets.sh valley
+ual=${1:-../shared/datasets/ual-campus-2014-05-23.rawlog}
 out=$PWD/out/bench-localize
 rm -rf "$out" && mkdir -p "$out"
 
@@ -51,7 +58,25 @@ for draw in 1 2 3; do
 done
 
 echo
-echo "== 3. side by side with MRPT's pf-localization: the first 30 s of the same log, the same map"
+echo "== 3. a real outdoor log: the UAL campus, its first two thirds mapped, the whole log localized"
+if [[ ! -f $ual ]] || ! command -v rawlog-edit > /dev/null; then
+  echo "skipped: needs $ual and rawlog-edit (apt-get install mrpt-apps)"
+else
+  entries=$(rawlog-edit --info -i "$ual" 2>/dev/null | awk -F: '/Overall number of objects/ { print $2 + 0 }')
+  rawlog-edit --cut --to-index $((entries * 2 / 3)) -i "$ual" -o "$out/ual-first.rawlog" -w > /dev/null 2>&1
+  taskset -c 0 "$bin/swslam" -c config/default.ini -i "$out/ual-first.rawlog" -o "$out/ual-first" -d -q --no-render \
+    --save-session "$out/ual-session" > /dev/null 2>&1
+  taskset -c 0 "$bin/swslam" -c config/default.ini -i "$ual" -o "$out/ual-whole" -d -q --no-render > /dev/null 2>&1
+  taskset -c 0 "$bin/swslam-localize" -m "$out/ual-session" -i "$ual" -o "$out/ual-localized" | sed 's/^/   /'
+  echo "-- against the session's own run (the first two thirds)"
+  /usr/bin/python3 scripts/localization-errors.py "$out/ual-localized/localization.csv" "$out/ual-first/trajectory.tum"
+  echo "-- against the whole log's run (its loop closed: the session's map differs from it by its drift)"
+  /usr/bin/python3 scripts/localization-errors.py "$out/ual-localized/localization.csv" "$out/ual-whole/trajectory.tum"
+  rm -f "$out/ual-first.rawlog"
+fi
+
+echo
+echo "== 4. side by side with MRPT's pf-localization: the first 30 s of the same log, the same map"
 if ! command -v pf-localization > /dev/null || ! command -v rawlog-edit > /dev/null; then
   echo "skipped: needs pf-localization and rawlog-edit (apt-get install mrpt-apps)"
   exit 0
@@ -73,9 +98,16 @@ pf_ini() {  # NAME PARTICLES MODE X0 X1 Y0 Y1 [YAW0 YAW1]
 # The map's frame is the first node's: the log starts at the origin, the map spans +-125 m.
 pf_ini global 50000 0 -125 125 -125 125
 pf_ini local 5000 1 -0.5 0.5 -0.5 0.5 -10 10
-for run in global local; do
-  echo "-- pf-localization, $([[ $run == global ]] && echo "no initial pose (50,000 particles over the free cells)" \
-    || echo "start known to +-0.5 m, +-10 deg (5,000 particles)")"
+# pf-localization draws its particles from a seed of its own each run: the global start is run
+# three times.
+for run in global-1 global-2 global-3 local; do
+  if [[ $run == local ]]; then
+    echo "-- pf-localization, start known to +-0.5 m, +-10 deg (5,000 particles)"
+  else
+    cp "$out/pf-global.ini" "$out/pf-$run.ini"
+    sed -i "s|^logOutput_dir=.*|logOutput_dir=$out/pf-$run|" "$out/pf-$run.ini"
+    echo "-- pf-localization, no initial pose (50,000 particles over the free cells), run ${run#global-}"
+  fi
   (cd "$out" && taskset -c 0 pf-localization "pf-$run.ini" < /dev/null > "pf-$run.log" 2>&1)
   /usr/bin/python3 scripts/pf-errors.py "$out/pf-$run.log" "$out/session/keyframes.tum" datasets/valley/valley.gt.tum \
     "$truth" "$(awk '!/^#/ { print $1; exit }' "$truth")" 40

@@ -32,6 +32,12 @@ expect_refused "--throttle-scans must be at least 1, got -3" \
   "$bin/swslam" -c "$src/config/default.ini" -i "$lake" -o "$work/out" -d -q --no-render --throttle-scans -3
 expect_refused "--max-scans must be at least 0, got -1" \
   "$bin/swslam" -c "$src/config/default.ini" -i "$lake" -o "$work/out" -d -q --no-render --max-scans -1
+expect_refused "--max-scans must be at least 0, got -1" \
+  "$bin/swslam-localize" -m "$work" -i "$lake" -o "$work/out" --max-scans -1
+expect_refused "--starts must be at least 0, got -5" \
+  "$bin/swslam-bench-localize" -m "$work" --map-truth "$work/t.tum" -i "$lake" -t "$work/t.tum" --starts -5
+expect_refused "--initial-pose \"1 2\": three finite numbers are needed" \
+  "$bin/swslam-localize" -m "$work" -i "$lake" -o "$work/out" --initial-pose "1 2"
 [[ -e $work/out ]] && { echo "FAIL: a refused command line made $work/out"; fail=1; }
 printf 'VERTEX2 0 0 0 0\nVERTEX2 1 1 0 0\nEDGE2 0 1 1 0 0 1 0 1 1 0 0\n' > "$work/g.graph"
 expect_refused "--max-iters must be at least 0, got -1" \
