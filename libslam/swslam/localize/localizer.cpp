@@ -84,9 +84,11 @@ Localizer::NodeMatch Localizer::matchNode(const tracking::PreparedScan& scan, co
   if (!submap_ || submap_node_ != out.node)
   {
     const size_t node = out.node;
-    const double radius = params_.localization.neighbour_radius, range = params_.correlative.max_range;
+    // As many nodes as tracking's own submap holds keyframes.
+    const size_t count = static_cast<size_t>(params_.tracking.submap_keyframes);
+    const double range = params_.correlative.max_range;
     submap_ = std::make_unique<tracking::Submap>(nodes_.reference(node),
-                                                 [this, node, radius, range] { return nodes_.raysAround(node, radius, range); });
+                                                 [this, node, count, range] { return nodes_.raysAround(node, count, range); });
     submap_node_ = node;
   }
   const CPose2D node_sensor = nodes_.sensorPose(out.node);
@@ -131,6 +133,72 @@ double Localizer::mapScore(const tracking::PreparedScan& scan, const CPose2D& mo
   return correlative::scoreAt(relocalizer_.grid(), points, {sensor.x(), sensor.y(), sensor.phi()});
 }
 
+CPose2D Localizer::predictedMotion(const std::optional<CPose2D>& odometry, double interval) const
+{
+  // As tracking predicts: the odometry, else the last motion at constant velocity.
+  if (odometry) return *odometry;
+  if (last_interval_ && *last_interval_ > 0 && interval > 0)
+    return geometry::scaledMotion(last_motion_, std::clamp(interval / *last_interval_, 0.25, 4.0));
+  return last_motion_;
+}
+
+LocalizedScan Localizer::track(const tracking::PreparedScan& scan, const CPose2D& mount, const CPose2D& motion,
+                               double t)
+{
+  const CPose2D guess = pose_ + motion;
+  const NodeMatch m = matchNode(scan, mount, guess, true);
+  LocalizedScan out;
+  out.node = m.node;
+  out.inlier_fraction = m.inlier_fraction;
+  if (!last_matched_time_) last_matched_time_ = t;  // an initial pose counts as matched
+  if (m.good)
+  {
+    out.state = LocalizationState::Tracked;
+    out.pose = m.vehicle;
+    out.covariance = last_covariance_ = m.covariance;
+    last_matched_time_ = t;
+  }
+  else
+  {
+    out.state = LocalizationState::Predicted;
+    out.pose = guess;
+    const double dt = std::max(0.0, t - *last_matched_time_);
+    const double sxy = kPredictedSigmaXyPerS * dt, sth = kPredictedSigmaThetaPerS * dt;
+    out.covariance = last_covariance_ + Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal().toDenseMatrix();
+    lost_ = dt > params_.localization.lost_after;
+  }
+  if (!lost_)
+  {
+    last_motion_ = (-pose_) + out.pose;
+    pose_ = out.pose;
+  }
+  return out;
+}
+
+LocalizedScan Localizer::searchMap(const tracking::PreparedScan& scan, const CPose2D& mount,
+                                   const std::optional<CPose2D>& odometry, double t)
+{
+  LocalizedScan out;
+  out.state = LocalizationState::Lost;
+  out.covariance = Eigen::Matrix3d::Identity() * std::numeric_limits<double>::infinity();
+  const bool due = !last_search_time_ || t < *last_search_time_ ||
+                   t - *last_search_time_ >= params_.localization.relocalize_interval;
+  if (!due) return out;
+  last_search_time_ = t;
+  out.searched_map = true;
+  const std::optional<NodeMatch> m = relocalize(scan, mount);
+  if (!m) return out;
+  lost_ = false;
+  out.state = LocalizationState::Relocalized;
+  out.pose = pose_ = m->vehicle;
+  out.covariance = last_covariance_ = m->covariance;
+  out.node = m->node;
+  out.inlier_fraction = m->inlier_fraction;
+  last_motion_ = odometry ? *odometry : CPose2D();
+  last_matched_time_ = t;
+  return out;
+}
+
 LocalizedScan Localizer::localize(const sensor::ScanInput& input)
 {
   const double t = mrpt::Clock::toDouble(input.observation->timestamp);
@@ -138,77 +206,15 @@ LocalizedScan Localizer::localize(const sensor::ScanInput& input)
   const CPose2D mount = s.sensor_pose;
   nodes_.asMapSensor(s);
   const tracking::PreparedScan scan(std::move(s), forms_);
-  LocalizedScan out;
-  out.valid_rays = scan.scan().size();
   const double interval = last_time_ ? t - *last_time_ : 0.0;
 
-  if (!lost_)
-  {
-    // Predicted as tracking predicts: the odometry, else the last motion at constant velocity.
-    CPose2D motion = last_motion_;
-    if (input.odometry_increment)
-      motion = *input.odometry_increment;
-    else if (last_interval_ && *last_interval_ > 0 && interval > 0)
-      motion = geometry::scaledMotion(last_motion_, std::clamp(interval / *last_interval_, 0.25, 4.0));
-    const CPose2D guess = pose_ + motion;
-    const NodeMatch m = matchNode(scan, mount, guess, true);
-    out.node = m.node;
-    out.inlier_fraction = m.inlier_fraction;
-    if (!last_matched_time_) last_matched_time_ = t;  // an initial pose counts as matched
-    if (m.good)
-    {
-      out.state = LocalizationState::Tracked;
-      out.pose = m.vehicle;
-      out.covariance = last_covariance_ = m.covariance;
-      last_matched_time_ = t;
-    }
-    else
-    {
-      out.state = LocalizationState::Predicted;
-      out.pose = guess;
-      const double dt = std::max(0.0, t - *last_matched_time_);
-      const double sxy = kPredictedSigmaXyPerS * dt, sth = kPredictedSigmaThetaPerS * dt;
-      out.covariance = last_covariance_ + Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal().toDenseMatrix();
-      lost_ = dt > params_.localization.lost_after;
-    }
-    if (!lost_)
-    {
-      last_motion_ = (-pose_) + out.pose;
-      pose_ = out.pose;
-    }
-  }
-  if (lost_)
-  {
-    const bool due = !last_search_time_ || t < *last_search_time_ ||
-                     t - *last_search_time_ >= params_.localization.relocalize_interval;
-    std::optional<NodeMatch> m;
-    if (due)
-    {
-      last_search_time_ = t;
-      out.searched_map = true;
-      m = relocalize(scan, mount);
-    }
-    if (m)
-    {
-      lost_ = false;
-      out.state = LocalizationState::Relocalized;
-      out.pose = pose_ = m->vehicle;
-      out.covariance = last_covariance_ = m->covariance;
-      out.node = m->node;
-      out.inlier_fraction = m->inlier_fraction;
-      last_motion_ = input.odometry_increment ? *input.odometry_increment : CPose2D();
-      last_matched_time_ = t;
-    }
-    else
-    {
-      out.state = LocalizationState::Lost;
-      out.pose = CPose2D();
-      out.covariance = Eigen::Matrix3d::Identity() * std::numeric_limits<double>::infinity();
-      out.inlier_fraction = 0;
-    }
-  }
+  LocalizedScan out;
+  if (!lost_) out = track(scan, mount, predictedMotion(input.odometry_increment, interval), t);
+  // Lost before this scan, or by it: the whole map is searched when due.
+  if (lost_) out = searchMap(scan, mount, input.odometry_increment, t);
+  out.valid_rays = scan.scan().size();
   if (out.state != LocalizationState::Lost) out.map_score = mapScore(scan, mount, out.pose);
-  last_interval_ = interval > 0 ? std::optional<double>(interval) : last_interval_;
+  if (interval > 0) last_interval_ = interval;
   last_time_ = t;
   return out;
 }

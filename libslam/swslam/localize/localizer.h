@@ -87,6 +87,15 @@ class Localizer
   std::optional<NodeMatch> relocalize(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount);
   double mapScore(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
                   const mrpt::poses::CPose2D& vehicle) const;
+  /** The vehicle's motion since the last scan, `interval` seconds ago. */
+  mrpt::poses::CPose2D predictedMotion(const std::optional<mrpt::poses::CPose2D>& odometry, double interval) const;
+  /** Not lost: the scan matched from the last pose moved by `motion`, or placed by the
+   * prediction (and lost once that has lasted lost_after). */
+  LocalizedScan track(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+                      const mrpt::poses::CPose2D& motion, double t);
+  /** Lost: the whole map searched if relocalize_interval has passed since the last search. */
+  LocalizedScan searchMap(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+                          const std::optional<mrpt::poses::CPose2D>& odometry, double t);
 
   const MapNodes& nodes_;
   const Relocalizer& relocalizer_;

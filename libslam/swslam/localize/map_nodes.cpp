@@ -2,10 +2,12 @@
 
 #include <swslam/geometry/se2_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace swslam::localize
 {
@@ -56,18 +58,24 @@ size_t MapNodes::nearest(const CPose2D& sensor_pose, double rotation_length) con
   return best;
 }
 
-std::vector<correlative::Ray> MapNodes::raysAround(size_t id, double radius, double max_range) const
+std::vector<correlative::Ray> MapNodes::raysAround(size_t id, size_t count, double max_range) const
 {
   const CPose2D centre = sensorPose(id);
-  const CPose2D to_centre = -centre;
-  std::vector<correlative::Ray> out;
+  std::vector<std::pair<double, size_t>> by_distance;
   for (size_t k = 0; k < poses_.size(); ++k)
   {
     const CPose2D s = sensorPose(k);
-    if (std::hypot(s.x() - centre.x(), s.y() - centre.y()) > radius) continue;
-    const CPose2D t = to_centre + s;
+    by_distance.emplace_back(k == id ? -1.0 : std::hypot(s.x() - centre.x(), s.y() - centre.y()), k);
+  }
+  const size_t n = std::min(count, by_distance.size());
+  std::partial_sort(by_distance.begin(), by_distance.begin() + n, by_distance.end());
+  const CPose2D to_centre = -centre;
+  std::vector<correlative::Ray> out;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const CPose2D t = to_centre + sensorPose(by_distance[i].second);
     const Eigen::Vector2d origin(t.x(), t.y());
-    for (const auto& p : store_.get(k)->scan.points)
+    for (const auto& p : store_.get(by_distance[i].second)->scan.points)
     {
       if (p.norm() > max_range) continue;
       double x, y;

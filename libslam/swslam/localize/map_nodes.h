@@ -42,9 +42,9 @@ class MapNodes
    * keeps the scan's own mounting for its vehicle pose. */
   void asMapSensor(sensor::Scan& scan) const;
 
-  /** The rays, up to max_range, of the nodes whose sensor is within `radius` of node id's, in
-   * node id's sensor frame: a search's reference around that node. */
-  std::vector<correlative::Ray> raysAround(size_t id, double radius, double max_range) const;
+  /** The rays, up to max_range, of the `count` nodes whose sensors are nearest node id's (it
+   * among them), in node id's sensor frame: a search's reference around that node. */
+  std::vector<correlative::Ray> raysAround(size_t id, size_t count, double max_range) const;
 
  private:
   std::vector<mrpt::poses::CPose2D> poses_, mounts_;

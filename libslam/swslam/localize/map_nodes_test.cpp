@@ -23,7 +23,7 @@ TEST(MapNodes, RaysAroundANodeAreInItsSensorFrame)
 {
   const auto m = test::savedWorldMap(test::roomWorld(), {CPose2D(0, 0, 0), CPose2D(1, 0, M_PI / 2), CPose2D(-9, 0, 0)});
   const localize::MapNodes nodes(m.poses, m.scans, plicp::PlicpParams());
-  const auto rays = nodes.raysAround(0, 2.0, 30);  // nodes 0 and 1, not 2
+  const auto rays = nodes.raysAround(0, 2, 30);  // node 0 and its nearest, node 1; not node 2
   ASSERT_EQ(rays.size(), m.scans[0].size() + m.scans[1].size());
   EXPECT_TRUE(rays.front().origin.isZero());
   // Node 1's sensor, at (1.0, 0.3) facing +y, is at (0.7, 0) seen from node 0's at (0.3, 0).

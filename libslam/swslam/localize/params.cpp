@@ -20,9 +20,7 @@ const common::ParamTable<LocalizationParams>& LocalizationParams::table()
                 "a tracked match explains at least this fraction of the scan's rays")
           .real("lost_after", &P::lost_after, "s", atLeast(0), "placed by the prediction this long: lost")
           .real("relocalize_interval", &P::relocalize_interval, "s", atLeast(0),
-                "log time between two whole-map searches while lost")
-          .real("neighbour_radius", &P::neighbour_radius, "m", above(0),
-                "nodes within this of the matched node make the tracking search's grid");
+                "log time between two whole-map searches while lost");
   return t;
 }
 

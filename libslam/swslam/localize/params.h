@@ -23,7 +23,6 @@ struct LocalizationParams
   double min_inlier_fraction = 0.5;
   double lost_after = 1.0;            ///< [s] placed by the prediction this long: lost
   double relocalize_interval = 0.25;  ///< [s] of log between two whole-map searches while lost
-  double neighbour_radius = 8.0;      ///< [m] nodes whose rays make a tracking search's grid
 
   static const common::ParamTable<LocalizationParams>& table();
 };
