@@ -125,11 +125,17 @@ class LocalizationSink : public Sink
   }
   void feed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan, size_t index, SkipReporter& skips) override
   {
-    std::string skipped;
-    if (!session_.feed({scan, std::nullopt}, &skipped) && !skipped.empty())
-      skips.report(system::FeedStatus::BadGeometry, index, skipped);
+    system::FeedResult refused;
+    try
+    {
+      if (!session_.feed({scan, std::nullopt}, &refused)) skips.report(refused.status, index, refused.message);
+    }
+    catch (const std::exception& e)
+    {
+      error_ = "localization failed at scan " + std::to_string(index) + ": " + e.what();
+    }
   }
-  std::string error() const override { return ""; }
+  std::string error() const override { return error_; }
   std::string status(const io::HokuyoLinkStats& link, double elapsed) const override
   {
     char buf[160];
@@ -151,6 +157,7 @@ class LocalizationSink : public Sink
  private:
   const LiveRunOptions& opts_;
   LocalizationSession session_;
+  std::string error_;  ///< the localizer's failure: the run stops, its outputs written
 };
 
 /** What a live run holds: its configuration, the sensor, the recording and the output folder. */

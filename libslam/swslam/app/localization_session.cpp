@@ -63,7 +63,8 @@ LocalizationSession::LocalizationSession(const SavedMap& saved, const std::strin
       before_(config.system.map),
       after_(config.system.map),
       keyframe_translation_(config.system.tracking.keyframe_translation),
-      keyframe_rotation_(config.system.tracking.keyframe_rotation)
+      keyframe_rotation_(config.system.tracking.keyframe_rotation),
+      gate_(config.system.system)
 {
   if (initial_pose) localizer_->setInitialPose(*initial_pose);
   for (size_t id = 0; id < saved.observations.size(); ++id)
@@ -72,15 +73,13 @@ LocalizationSession::LocalizationSession(const SavedMap& saved, const std::strin
 
 LocalizationSession::~LocalizationSession() = default;
 
-const localize::LocalizedScan* LocalizationSession::feed(const sensor::ScanInput& in, std::string* skipped_reason)
+const localize::LocalizedScan* LocalizationSession::feed(sensor::ScanInput in, system::FeedResult* refused)
 {
-  try
+  const system::FeedResult admitted = gate_.admit(in);
+  if (!admitted.ok())
   {
-    sensor::checkObservationGeometry(*in.observation);
-  }
-  catch (const std::invalid_argument& e)
-  {
-    if (skipped_++ == 0 && skipped_reason) *skipped_reason = e.what();
+    skipped_++;
+    if (refused) *refused = admitted;
     return nullptr;
   }
   const auto start = std::chrono::steady_clock::now();
@@ -143,7 +142,8 @@ std::string LocalizationSession::summary(const std::string& input) const
   s << "input: " << input << "\n";
   s << "scans: " << rows_.size() << "; tracked " << counts[0] << ", relocalized " << counts[1] << ", predicted "
     << counts[2] << ", lost " << counts[3] << "\n";
-  if (skipped_ > 0) s << "skipped: " << skipped_ << " observations whose geometry failed the input check\n";
+  if (skipped_ > 0)
+    s << "skipped: " << skipped_ << " scans the input gate refused (geometry, stamps; doc/system.md, Bad input)\n";
   if (first)
     s << "first localized: scan " << *first << ", " << rows_[*first].t - rows_.front().t << " s after the first\n";
   else

@@ -11,6 +11,7 @@
 #include <swslam/map/change_detection.h>
 #include <swslam/map/outputs.h>
 #include <swslam/sensor/scan_input.h>
+#include <swslam/system/input_gate.h>
 
 #include <mrpt/poses/CPose2D.h>
 
@@ -31,9 +32,11 @@ class LocalizationSession
                       const std::optional<mrpt::poses::CPose2D>& initial_pose);
   ~LocalizationSession();
 
-  /** Localizes one scan; a scan whose geometry fails the input check is skipped and counted
-   * (the first one's reason is returned in `skipped_reason`, later ones' not). */
-  const localize::LocalizedScan* feed(const sensor::ScanInput& in, std::string* skipped_reason = nullptr);
+  /** Localizes one scan after the input gate the SLAM system applies (system/input_gate.h: its
+   * geometry, a stamp out of range or not after the last, unusable odometry dropped); a scan
+   * the gate skips is counted, and null returned with the gate's result in `refused`. Throws
+   * what the localizer throws (a module failure). */
+  const localize::LocalizedScan* feed(sensor::ScanInput in, system::FeedResult* refused = nullptr);
 
   size_t scans() const { return rows_.size(); }
   bool anyLocalized() const;
@@ -67,6 +70,7 @@ class LocalizationSession
   std::optional<mrpt::poses::CPose2D> last_counted_;
   double keyframe_translation_ = 0, keyframe_rotation_ = 0;
   std::vector<mrpt::poses::CPose2D> counted_poses_;
+  system::InputGate gate_;
   std::vector<Row> rows_;
   size_t skipped_ = 0;
 };

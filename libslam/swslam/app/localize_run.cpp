@@ -28,14 +28,29 @@ int runLocalize(const LocalizeOptions& o, std::ostream& out, std::ostream& err)
 
     RunOutcome outcome;
     StopSignal stop;
+    bool printed_skip = false;
     try
     {
       sensor::ScanInput in;
       while ((o.max_scans == 0 || session.scans() < o.max_scans) && !stop.requested() && source->next(in))
       {
-        std::string skipped;
-        session.feed(in, &skipped);
-        if (!skipped.empty()) err << "swslam-localize: skipped a scan (and any like it): " << skipped << "\n";
+        system::FeedResult refused;
+        const localize::LocalizedScan* placed = nullptr;
+        try
+        {
+          placed = session.feed(in, &refused);
+        }
+        catch (const std::exception& e)
+        {
+          err << "swslam-localize: localization failed at scan " << session.scans() << ": " << e.what() << "\n";
+          outcome.module_failed = true;
+          break;
+        }
+        if (!placed && !printed_skip)
+        {
+          err << "swslam-localize: skipped a scan (and any like it; counted in summary.md): " << refused.message << "\n";
+          printed_skip = true;
+        }
       }
     }
     catch (const std::exception& e)

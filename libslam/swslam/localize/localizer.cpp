@@ -87,8 +87,9 @@ Localizer::NodeMatch Localizer::matchNode(const tracking::PreparedScan& scan, co
     // As many nodes as tracking's own submap holds keyframes.
     const size_t count = static_cast<size_t>(params_.tracking.submap_keyframes);
     const double range = params_.correlative.max_range;
+    const MapNodes& nodes = nodes_;
     submap_ = std::make_unique<tracking::Submap>(nodes_.reference(node),
-                                                 [this, node, count, range] { return nodes_.raysAround(node, count, range); });
+                                                 [&nodes, node, count, range] { return nodes.raysAround(node, count, range); });
     submap_node_ = node;
   }
   const CPose2D node_sensor = nodes_.sensorPose(out.node);
@@ -150,7 +151,9 @@ LocalizedScan Localizer::track(const tracking::PreparedScan& scan, const CPose2D
   LocalizedScan out;
   out.node = m.node;
   out.inlier_fraction = m.inlier_fraction;
-  if (!last_matched_time_) last_matched_time_ = t;  // an initial pose counts as matched
+  // An initial pose counts as matched, and so does the last match when time stepped back
+  // (the log's clock was set back): the time since it counts from here.
+  if (!last_matched_time_ || t < *last_matched_time_) last_matched_time_ = t;
   if (m.good)
   {
     out.state = LocalizationState::Tracked;
@@ -209,7 +212,9 @@ LocalizedScan Localizer::localize(const sensor::ScanInput& input)
   const double interval = last_time_ ? t - *last_time_ : 0.0;
 
   LocalizedScan out;
-  if (!lost_) out = track(scan, mount, predictedMotion(input.odometry_increment, interval), t);
+  // The first scan after an initial pose is at that pose: the motion before it is not counted.
+  const CPose2D motion = last_matched_time_ ? predictedMotion(input.odometry_increment, interval) : CPose2D();
+  if (!lost_) out = track(scan, mount, motion, t);
   // Lost before this scan, or by it: the whole map is searched when due.
   if (lost_) out = searchMap(scan, mount, input.odometry_increment, t);
   out.valid_rays = scan.scan().size();

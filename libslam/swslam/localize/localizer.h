@@ -43,7 +43,7 @@ struct LocalizedScan
    * covariance; Predicted: grown by the time since the last match; Lost: infinite) */
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
   double inlier_fraction = 0;  ///< of the scan's valid rays, matched within 3 sigma of the node's surface
-  double map_score = 0;        ///< mean score of the scan's points on the map's grid at the pose (0..1)
+  double map_score = 0;        ///< mean score of the scan's points on the map's grid at the pose (-1..1; free space < 0)
   size_t node = 0;             ///< the map node matched against
   bool searched_map = false;   ///< the whole map was searched for this scan
   size_t valid_rays = 0;
@@ -63,7 +63,7 @@ class Localizer
   /** Localizes on `nodes` and `relocalizer`'s map (both outlive the localizer). */
   Localizer(const MapNodes& nodes, const Relocalizer& relocalizer, const LocalizerParams& params);
 
-  /** Starts tracking from this vehicle pose (map frame) at the next scan, not lost. */
+  /** Starts tracking from this vehicle pose (map frame): the next scan's pose, not lost. */
   void setInitialPose(const mrpt::poses::CPose2D& pose);
 
   /** Localizes one scan (its observation must have passed sensor::checkObservationGeometry). */

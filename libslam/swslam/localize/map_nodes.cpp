@@ -24,6 +24,16 @@ MapNodes::MapNodes(const std::vector<CPose2D>& poses, std::vector<sensor::Scan> 
   label_ = scans.front().sensor_label;
   beam_count_ = scans.front().beam_count;
   aperture_ = scans.front().aperture;
+  for (size_t id = 1; id < scans.size(); ++id)
+  {
+    const sensor::Scan& s = scans[id];
+    if (s.sensor_label != label_ || s.beam_count != beam_count_ || std::abs(s.aperture - aperture_) > 1e-6 ||
+        (s.sensor_pose - scans.front().sensor_pose).norm() > 1e-9 ||
+        std::abs(geometry::wrapAngle(s.sensor_pose.phi() - scans.front().sensor_pose.phi())) > 1e-9)
+      throw std::invalid_argument("map nodes: node " + std::to_string(id) + "'s scan comes from another sensor than node 0's ('" +
+                                  s.sensor_label + "', " + std::to_string(s.beam_count) + " beams, vs '" + label_ +
+                                  "', " + std::to_string(beam_count_) + "): a map of one sensor is localized on");
+  }
   mounts_.reserve(scans.size());
   for (size_t id = 0; id < scans.size(); ++id)
   {
@@ -65,7 +75,11 @@ std::vector<correlative::Ray> MapNodes::raysAround(size_t id, size_t count, doub
   for (size_t k = 0; k < poses_.size(); ++k)
   {
     const CPose2D s = sensorPose(k);
-    by_distance.emplace_back(k == id ? -1.0 : std::hypot(s.x() - centre.x(), s.y() - centre.y()), k);
+    const double d = std::hypot(s.x() - centre.x(), s.y() - centre.y());
+    if (k == id)
+      by_distance.emplace_back(-1.0, k);
+    else if (d <= 2 * max_range)
+      by_distance.emplace_back(d, k);
   }
   const size_t n = std::min(count, by_distance.size());
   std::partial_sort(by_distance.begin(), by_distance.begin() + n, by_distance.end());

@@ -21,7 +21,8 @@ class MapNodes
 {
  public:
   /** Node i at vehicle pose `poses[i]` (map frame) saw `scans[i]` (its sensor_pose the
-   * mounting). Throws std::invalid_argument if the counts differ or there is no node. */
+   * mounting). Throws std::invalid_argument if the counts differ, there is no node, or the
+   * nodes' scans come from more than one sensor (label, beam count, aperture or mounting). */
   MapNodes(const std::vector<mrpt::poses::CPose2D>& poses, std::vector<sensor::Scan> scans,
            const plicp::PlicpParams& plicp);
 
@@ -43,7 +44,8 @@ class MapNodes
   void asMapSensor(sensor::Scan& scan) const;
 
   /** The rays, up to max_range, of the `count` nodes whose sensors are nearest node id's (it
-   * among them), in node id's sensor frame: a search's reference around that node. */
+   * among them) and within 2 max_range of it (a farther node's rays reach no point of a scan
+   * taken there), in node id's sensor frame: a search's reference around that node. */
   std::vector<correlative::Ray> raysAround(size_t id, size_t count, double max_range) const;
 
  private:

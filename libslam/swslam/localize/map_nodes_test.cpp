@@ -42,3 +42,20 @@ TEST(MapNodes, CountsMustAgree)
   EXPECT_THROW(localize::MapNodes({CPose2D()}, {}, plicp::PlicpParams()), std::invalid_argument);
   EXPECT_THROW(localize::MapNodes({}, {}, plicp::PlicpParams()), std::invalid_argument);
 }
+
+TEST(MapNodes, AFarNodeLendsNoRaysEvenWhenFewAreNear)
+{
+  // Three nodes asked for; the third is 100 m away, beyond twice the rays' 30 m.
+  const auto m = test::savedWorldMap(test::roomWorld(), {CPose2D(0, 0, 0), CPose2D(1, 0, 0), CPose2D(100, 0, 0)});
+  const localize::MapNodes nodes(m.poses, m.scans, plicp::PlicpParams());
+  EXPECT_EQ(nodes.raysAround(0, 3, 30).size(), m.scans[0].size() + m.scans[1].size());
+}
+
+TEST(MapNodes, NodesOfTwoSensorsAreANamedError)
+{
+  auto m = test::savedWorldMap(test::roomWorld(), {CPose2D(0, 0, 0), CPose2D(1, 0, 0)});
+  m.scans[1].sensor_pose = CPose2D(0.5, 0, 0);
+  EXPECT_NE(test::errorOf([&] { localize::MapNodes(m.poses, m.scans, plicp::PlicpParams()); })
+                .find("node 1's scan comes from another sensor"),
+            std::string::npos);
+}

@@ -23,7 +23,8 @@ std::vector<Eigen::Vector2d> occupiedCells(const mrpt::maps::COccupancyGridMap2D
 }
 
 correlative::ScoreGrid occupancyScoreGrid(const mrpt::maps::COccupancyGridMap2D& grid, double occupied_thresh,
-                                          double free_thresh, double sigma, int free_value, int pad_cells)
+                                          double free_thresh, double sigma, int free_value, int pad_cells,
+                                          size_t max_cells)
 {
   // The score grid's cells are the map's, padded on the low sides: a point on a map cell
   // scores that cell's value.
@@ -32,12 +33,14 @@ correlative::ScoreGrid occupancyScoreGrid(const mrpt::maps::COccupancyGridMap2D&
   out.pad_cells = pad_cells;
   const int w = static_cast<int>(grid.getSizeX()), h = static_cast<int>(grid.getSizeY());
   const double cells = double(w + pad_cells) * double(h + pad_cells);
-  if (cells > double(correlative::kMaxPyramidCells))
+  if (cells > double(max_cells))
     throw std::length_error("map of " + std::to_string(w) + " x " + std::to_string(h) +
-                            " cells: beyond the whole-map search's budget of " +
-                            std::to_string(correlative::kMaxPyramidCells) + " cells");
-  const std::vector<Eigen::Vector2d> occupied = occupiedCells(grid, occupied_thresh);
-  if (occupied.empty()) return out;
+                            " cells: beyond the whole-map search's budget of " + std::to_string(max_cells) +
+                            " cells a level");
+  bool any_occupied = false;
+  for (unsigned y = 0; y < grid.getSizeY() && !any_occupied; ++y)
+    for (unsigned x = 0; x < grid.getSizeX() && !any_occupied; ++x) any_occupied = occupancy(grid, x, y) >= occupied_thresh;
+  if (!any_occupied) return out;
   out.origin = Eigen::Vector2d(grid.getXMin(), grid.getYMin()) - Eigen::Vector2d::Constant(pad_cells * out.resolution);
   out.width = w + pad_cells;
   out.height = h + pad_cells;

@@ -18,9 +18,10 @@ std::vector<Eigen::Vector2d> occupiedCells(const mrpt::maps::COccupancyGridMap2D
 /** The score grid of the occupied cells (kernel `sigma`, on the map's own cells, padded by
  * `pad_cells` on its low sides), and `free_value` (in [-255, 0]) on the cells the map holds as
  * free (occupancy below `free_thresh`) that no kernel reaches. An empty grid for a map with no
- * occupied cell. Throws std::length_error, before allocating, for a map of more than
- * correlative::kMaxPyramidCells cells. */
+ * occupied cell. Throws std::length_error, before allocating, for a grid (padding included) of
+ * more than `max_cells` cells. */
 correlative::ScoreGrid occupancyScoreGrid(const mrpt::maps::COccupancyGridMap2D& grid, double occupied_thresh,
-                                          double free_thresh, double sigma, int free_value, int pad_cells);
+                                          double free_thresh, double sigma, int free_value, int pad_cells,
+                                          size_t max_cells = correlative::kMaxPyramidCells);
 
 }  // namespace swslam::localize

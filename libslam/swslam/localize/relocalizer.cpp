@@ -14,8 +14,10 @@ correlative::ScorePyramid mapPyramid(const mrpt::maps::COccupancyGridMap2D& grid
                                      double free_thresh)
 {
   // The kernel is one cell wide: the map's cells are the search's translation step.
-  correlative::ScoreGrid base = occupancyScoreGrid(grid, occupied_thresh, free_thresh, grid.getResolution(), -255,
-                                                   (1 << kPyramidDepth) - 1);
+  // The pyramid's budget shared by its levels, each the base's size: refused before any is built.
+  correlative::ScoreGrid base =
+      occupancyScoreGrid(grid, occupied_thresh, free_thresh, grid.getResolution(), -255, (1 << kPyramidDepth) - 1,
+                         correlative::kMaxPyramidCells / (kPyramidDepth + 1));
   if (base.cells.empty()) throw std::invalid_argument("the map has no occupied cell to localize against");
   return correlative::ScorePyramid(std::move(base), kPyramidDepth);
 }
