@@ -106,6 +106,123 @@ struct Timer
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 };
+/** What each section localizes on. */
+struct Bench
+{
+  const localize::MapNodes& nodes;
+  const localize::Relocalizer& relocalizer;
+  localize::LocalizerParams params;
+  /** A localizer that starts lost. */
+  localize::Localizer fresh() const { return localize::Localizer(nodes, relocalizer, params); }
+};
+
+/** 1. The whole log from its first scan, no initial pose; its whole-map searches' times to `search_ms`. */
+void wholeLog(const Bench& bench, const ScoredLog& log, std::vector<double>& search_ms, std::ostream& out)
+{
+  localize::Localizer loc = bench.fresh();
+  size_t counts[4] = {0, 0, 0, 0};
+  std::vector<double> errors, heading_errors, track_ms;
+  std::optional<size_t> first;
+  for (size_t k = 0; k < log.scans.size(); ++k)
+  {
+    Timer t;
+    const auto r = loc.localize(log.scans[k]);
+    const double ms = t.ms();
+    counts[static_cast<int>(r.state)]++;
+    (r.searched_map ? search_ms : track_ms).push_back(ms);
+    if (r.state == LocalizationState::Lost) continue;
+    if (!first) first = k;
+    errors.push_back(translationError(r.pose, log.truth[k]));
+    heading_errors.push_back(std::abs(geometry::wrapAngle(r.pose.phi() - log.truth[k].phi())));
+  }
+  double sq = 0;
+  for (double e : errors) sq += e * e;
+  out << "\n1. whole log, from its first scan with no initial pose\n";
+  out << "   localized from scan " << (first ? std::to_string(*first) : "never") << "; tracked " << counts[0]
+      << ", relocalized " << counts[1] << ", predicted " << counts[2] << ", lost " << counts[3] << "\n";
+  if (!errors.empty())
+    out << std::setprecision(4) << "   position error: RMS " << std::sqrt(sq / double(errors.size())) << " m, p99 "
+        << percentile(errors, 0.99) << " m, max " << percentile(errors, 1.0) << " m; heading max "
+        << mrpt::RAD2DEG(percentile(heading_errors, 1.0)) << " deg\n";
+  out << std::setprecision(2) << "   time per tracked scan: mean "
+      << (track_ms.empty() ? 0.0 : std::accumulate(track_ms.begin(), track_ms.end(), 0.0) / double(track_ms.size()))
+      << " ms, p99 " << percentile(track_ms, 0.99) << " ms, max " << percentile(track_ms, 1.0) << " ms\n";
+}
+
+/** 2. Random starts: a fresh localizer at a random scan, no initial pose. */
+void randomStarts(const Bench& bench, const ScoredLog& log, const BenchLocalizeOptions& o,
+                  std::vector<double>& search_ms, std::ostream& out)
+{
+  std::mt19937 rng(o.seed);
+  const double span = o.window + o.follow;
+  size_t last_start = 0;
+  while (last_start < log.scans.size() && log.times[last_start] - log.times.front() < log.times.back() - log.times.front() - span)
+    last_start++;
+  if (last_start == 0) throw std::invalid_argument("the log is shorter than --window plus --follow");
+  std::uniform_int_distribution<size_t> pick(0, last_start - 1);
+  size_t found = 0, succeeded = 0, wrong = 0;
+  std::vector<double> delays, errors_at, follow_max;
+  for (size_t s = 0; s < o.starts; ++s)
+  {
+    const size_t start = pick(rng);
+    localize::Localizer loc = bench.fresh();
+    std::optional<double> at;
+    double err_at = 0, worst = 0;
+    for (size_t k = start; k < log.scans.size(); ++k)
+    {
+      const double dt = log.times[k] - log.times[start];
+      if (!at && dt > o.window) break;
+      if (at && log.times[k] - *at > o.follow) break;
+      Timer t;
+      const auto r = loc.localize(log.scans[k]);
+      if (r.searched_map) search_ms.push_back(t.ms());
+      if (r.state == LocalizationState::Lost) continue;
+      const double e = translationError(r.pose, log.truth[k]);
+      if (!at)
+      {
+        at = log.times[k];
+        err_at = e;
+        delays.push_back(dt);
+      }
+      worst = std::max(worst, e);
+    }
+    if (!at) continue;
+    found++;
+    errors_at.push_back(err_at);
+    follow_max.push_back(worst);
+    if (err_at <= o.max_error) succeeded++;
+    if (err_at > 0.5) wrong++;
+  }
+  out << "\n2. relocalization from " << o.starts << " random starts (seed " << o.seed << "), each within "
+      << std::setprecision(1) << o.window << " s of log\n";
+  out << "   relocalized " << found << ", within " << std::setprecision(2) << o.max_error << " m: " << succeeded
+      << " (" << std::setprecision(0) << 100.0 * double(succeeded) / double(o.starts) << "%); wrong (> 0.5 m): "
+      << wrong << "\n";
+  out << std::setprecision(3) << "   log time to relocalize: median " << percentile(delays, 0.5) << " s, max "
+      << percentile(delays, 1.0) << " s\n";
+  out << std::setprecision(4) << "   error at relocalization: median " << percentile(errors_at, 0.5)
+      << " m, max " << percentile(errors_at, 1.0) << " m; worst over the next " << std::setprecision(0)
+      << o.follow << " s: median " << std::setprecision(4) << percentile(follow_max, 0.5) << " m, max "
+      << percentile(follow_max, 1.0) << " m\n";
+  out << std::setprecision(0) << "   whole-map search: " << search_ms.size() << " run, median "
+      << percentile(search_ms, 0.5) << " ms, max " << percentile(search_ms, 1.0) << " ms\n";
+}
+
+/** 3. A log of another place: every scan must stay lost. */
+void elsewhere(const Bench& bench, const BenchLocalizeOptions& o, std::ostream& out)
+{
+  const auto other = readLog(o.elsewhere, o.use_odometry);
+  localize::Localizer loc = bench.fresh();
+  size_t placed = 0, searched = 0;
+  for (const auto& in : other)
+  {
+    const auto r = loc.localize(in);
+    placed += r.state != LocalizationState::Lost;
+    searched += r.searched_map;
+  }
+  out << "\n3. another place: " << o.elsewhere << ", " << other.size() << " scans, " << searched
+      << " whole-map searches: localized " << placed << " (lost " << other.size() - placed << ")\n";
+}
 }  // namespace
 
 int runBenchLocalize(const BenchLocalizeOptions& o, std::ostream& out, std::ostream& err)
@@ -136,112 +253,11 @@ int runBenchLocalize(const BenchLocalizeOptions& o, std::ostream& out, std::ostr
     out << "log: " << o.input << ", " << log.scans.size() << " scans with a reference pose"
         << (o.use_odometry ? "" : ", laser only") << "\n";
 
+    const Bench bench{nodes, relocalizer, params};
     std::vector<double> search_ms;
-    // 1. The whole log from its first scan, no initial pose.
-    {
-      localize::Localizer loc(nodes, relocalizer, params);
-      size_t counts[4] = {0, 0, 0, 0};
-      std::vector<double> errors, heading_errors, track_ms;
-      std::optional<size_t> first;
-      for (size_t k = 0; k < log.scans.size(); ++k)
-      {
-        Timer t;
-        const auto r = loc.localize(log.scans[k]);
-        const double ms = t.ms();
-        counts[static_cast<int>(r.state)]++;
-        (r.searched_map ? search_ms : track_ms).push_back(ms);
-        if (r.state == LocalizationState::Lost) continue;
-        if (!first) first = k;
-        errors.push_back(translationError(r.pose, log.truth[k]));
-        heading_errors.push_back(std::abs(geometry::wrapAngle(r.pose.phi() - log.truth[k].phi())));
-      }
-      double sq = 0;
-      for (double e : errors) sq += e * e;
-      out << "\n1. whole log, from its first scan with no initial pose\n";
-      out << "   localized from scan " << (first ? std::to_string(*first) : "never") << "; tracked " << counts[0]
-          << ", relocalized " << counts[1] << ", predicted " << counts[2] << ", lost " << counts[3] << "\n";
-      if (!errors.empty())
-        out << std::setprecision(4) << "   position error: RMS " << std::sqrt(sq / double(errors.size())) << " m, p99 "
-            << percentile(errors, 0.99) << " m, max " << percentile(errors, 1.0) << " m; heading max "
-            << mrpt::RAD2DEG(percentile(heading_errors, 1.0)) << " deg\n";
-      out << std::setprecision(2) << "   time per tracked scan: mean "
-          << (track_ms.empty() ? 0.0 : std::accumulate(track_ms.begin(), track_ms.end(), 0.0) / double(track_ms.size()))
-          << " ms, p99 " << percentile(track_ms, 0.99) << " ms, max " << percentile(track_ms, 1.0) << " ms\n";
-    }
-
-    // 2. Random starts: a fresh localizer at a random scan, no initial pose.
-    if (o.starts > 0)
-    {
-      std::mt19937 rng(o.seed);
-      const double span = o.window + o.follow;
-      size_t last_start = 0;
-      while (last_start < log.scans.size() && log.times[last_start] - log.times.front() < log.times.back() - log.times.front() - span)
-        last_start++;
-      if (last_start == 0) throw std::invalid_argument("the log is shorter than --window plus --follow");
-      std::uniform_int_distribution<size_t> pick(0, last_start - 1);
-      size_t found = 0, succeeded = 0, wrong = 0;
-      std::vector<double> delays, errors_at, follow_max;
-      for (size_t s = 0; s < o.starts; ++s)
-      {
-        const size_t start = pick(rng);
-        localize::Localizer loc(nodes, relocalizer, params);
-        std::optional<double> at;
-        double err_at = 0, worst = 0;
-        for (size_t k = start; k < log.scans.size(); ++k)
-        {
-          const double dt = log.times[k] - log.times[start];
-          if (!at && dt > o.window) break;
-          if (at && log.times[k] - *at > o.follow) break;
-          Timer t;
-          const auto r = loc.localize(log.scans[k]);
-          if (r.searched_map) search_ms.push_back(t.ms());
-          if (r.state == LocalizationState::Lost) continue;
-          const double e = translationError(r.pose, log.truth[k]);
-          if (!at)
-          {
-            at = log.times[k];
-            err_at = e;
-            delays.push_back(dt);
-          }
-          worst = std::max(worst, e);
-        }
-        if (!at) continue;
-        found++;
-        errors_at.push_back(err_at);
-        follow_max.push_back(worst);
-        if (err_at <= o.max_error) succeeded++;
-        if (err_at > 0.5) wrong++;
-      }
-      out << "\n2. relocalization from " << o.starts << " random starts (seed " << o.seed << "), each within "
-          << std::setprecision(1) << o.window << " s of log\n";
-      out << "   relocalized " << found << ", within " << std::setprecision(2) << o.max_error << " m: " << succeeded
-          << " (" << std::setprecision(0) << 100.0 * double(succeeded) / double(o.starts) << "%); wrong (> 0.5 m): "
-          << wrong << "\n";
-      out << std::setprecision(3) << "   log time to relocalize: median " << percentile(delays, 0.5) << " s, max "
-          << percentile(delays, 1.0) << " s\n";
-      out << std::setprecision(4) << "   error at relocalization: median " << percentile(errors_at, 0.5)
-          << " m, max " << percentile(errors_at, 1.0) << " m; worst over the next " << std::setprecision(0)
-          << o.follow << " s: median " << std::setprecision(4) << percentile(follow_max, 0.5) << " m, max "
-          << percentile(follow_max, 1.0) << " m\n";
-      out << std::setprecision(0) << "   whole-map search: " << search_ms.size() << " run, median "
-          << percentile(search_ms, 0.5) << " ms, max " << percentile(search_ms, 1.0) << " ms\n";
-    }
-
-    // 3. A log of another place: every scan must stay lost.
-    if (!o.elsewhere.empty())
-    {
-      const auto other = readLog(o.elsewhere, o.use_odometry);
-      localize::Localizer loc(nodes, relocalizer, params);
-      size_t placed = 0, searched = 0;
-      for (const auto& in : other)
-      {
-        const auto r = loc.localize(in);
-        placed += r.state != LocalizationState::Lost;
-        searched += r.searched_map;
-      }
-      out << "\n3. another place: " << o.elsewhere << ", " << other.size() << " scans, " << searched
-          << " whole-map searches: localized " << placed << " (lost " << other.size() - placed << ")\n";
-    }
+    wholeLog(bench, log, search_ms, out);
+    if (o.starts > 0) randomStarts(bench, log, o, search_ms, out);
+    if (!o.elsewhere.empty()) elsewhere(bench, o, out);
     return kExitOk;
   });
 }
