@@ -235,10 +235,8 @@ int runBenchLocalize(const BenchLocalizeOptions& o, std::ostream& out, std::ostr
     const CPose2D world_to_map = worldToMap(saved, o.map_truth, align_rms, align_pairs);
     const ScoredLog log = scoredLog(o.input, o.truth, o.use_odometry, world_to_map);
 
-    std::vector<sensor::Scan> scans;
-    for (const auto& obs : saved.observations)
-      scans.push_back(sensor::scanFromObservation(*obs, cfg.system.tracking.min_range));
-    const localize::MapNodes nodes(saved.poses, std::move(scans), cfg.system.plicp);
+    const std::unique_ptr<localize::MapNodes> map_nodes = mapNodesOf(saved, cfg);
+    const localize::MapNodes& nodes = *map_nodes;
     Timer build;
     const localize::Relocalizer relocalizer(saved.grid, cfg.system.map.occupied_thresh, cfg.system.map.free_thresh,
                                             cfg.localization);

@@ -3,7 +3,6 @@
 #include <swslam/app/run_outputs.h>
 #include <swslam/common/atomic_file.h>
 #include <swslam/common/tum_io.h>
-#include <swslam/sensor/scan.h>
 
 #include <mrpt/core/Clock.h>
 
@@ -21,24 +20,6 @@ namespace
 {
 using localize::LocalizationState;
 
-std::unique_ptr<localize::MapNodes> mapNodes(const SavedMap& saved, const Config& cfg)
-{
-  std::vector<sensor::Scan> scans;
-  scans.reserve(saved.observations.size());
-  for (size_t id = 0; id < saved.observations.size(); ++id)
-  {
-    try
-    {
-      scans.push_back(sensor::scanFromObservation(*saved.observations[id], cfg.system.tracking.min_range));
-    }
-    catch (const std::exception& e)
-    {
-      throw std::invalid_argument("map node " + std::to_string(id) + "'s scan: " + e.what());
-    }
-  }
-  return std::make_unique<localize::MapNodes>(saved.poses, std::move(scans), cfg.system.plicp);
-}
-
 std::string describeMap(const SavedMap& saved, const std::string& dir)
 {
   std::ostringstream s;
@@ -52,7 +33,7 @@ std::string describeMap(const SavedMap& saved, const std::string& dir)
 LocalizationSession::LocalizationSession(const SavedMap& saved, const std::string& map_dir, const Config& config,
                                          const std::optional<mrpt::poses::CPose2D>& initial_pose)
     : map_line_(describeMap(saved, map_dir)),
-      nodes_(mapNodes(saved, config)),
+      nodes_(mapNodesOf(saved, config)),
       relocalizer_(std::make_unique<localize::Relocalizer>(saved.grid, config.system.map.occupied_thresh,
                                                            config.system.map.free_thresh, config.localization)),
       localizer_(std::make_unique<localize::Localizer>(

@@ -4,6 +4,7 @@
 #include <swslam/common/tum_io.h>
 #include <swslam/graph/io.h>
 #include <swslam/map/files.h>
+#include <swslam/sensor/scan.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -90,6 +91,24 @@ SavedMap readSavedMap(const std::string& dir)
   m.observations = std::move(s.resumed.observations);
   m.grid = readGrid(dir);
   return m;
+}
+
+std::unique_ptr<localize::MapNodes> mapNodesOf(const SavedMap& saved, const Config& cfg)
+{
+  std::vector<sensor::Scan> scans;
+  scans.reserve(saved.observations.size());
+  for (size_t id = 0; id < saved.observations.size(); ++id)
+  {
+    try
+    {
+      scans.push_back(sensor::scanFromObservation(*saved.observations[id], cfg.system.tracking.min_range));
+    }
+    catch (const std::exception& e)
+    {
+      throw std::invalid_argument("map node " + std::to_string(id) + "'s scan: " + e.what());
+    }
+  }
+  return std::make_unique<localize::MapNodes>(saved.poses, std::move(scans), cfg.system.plicp);
 }
 
 }  // namespace swslam::app

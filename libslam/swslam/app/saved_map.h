@@ -4,12 +4,15 @@
 // grid; a run folder's node scans are taken from its input log again, by stamp (as
 // swslam-regen-map does), so the log must still be where its run.ini says.
 
+#include <swslam/app/config.h>
 #include <swslam/app/run_record.h>
+#include <swslam/localize/map_nodes.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,5 +32,10 @@ struct SavedMap
  * the file and the problem (missing, damaged, counts that disagree, a node whose scan the log
  * does not hold). */
 SavedMap readSavedMap(const std::string& dir);
+
+/** The map's nodes for localization, their scans read with `config`'s [tracking] min_range.
+ * Throws std::invalid_argument naming a node whose scan fails the input's geometry check, or
+ * as localize::MapNodes does. */
+std::unique_ptr<localize::MapNodes> mapNodesOf(const SavedMap& saved, const Config& config);
 
 }  // namespace swslam::app

@@ -107,10 +107,9 @@ Localizer::NodeMatch Localizer::matchNode(const tracking::PreparedScan& scan, co
   return out;
 }
 
-std::optional<Localizer::NodeMatch> Localizer::relocalize(const tracking::PreparedScan& scan, const CPose2D& mount)
+std::optional<Localizer::NodeMatch> Localizer::relocalize(const tracking::PreparedScan& scan, const CPose2D& mount,
+                                                          const std::vector<Eigen::Vector2d>& points)
 {
-  const auto points =
-      correlative::thinPoints(scan.scan().points, relocalizer_.resolution(), std::numeric_limits<double>::infinity());
   const auto place = relocalizer_.find(points);
   if (!place || !place->distinct) return std::nullopt;
   const CPose2D sensor(place->pose.x(), place->pose.y(), place->pose.z());
@@ -126,11 +125,10 @@ std::optional<Localizer::NodeMatch> Localizer::relocalize(const tracking::Prepar
   return m;
 }
 
-double Localizer::mapScore(const tracking::PreparedScan& scan, const CPose2D& mount, const CPose2D& vehicle) const
+double Localizer::mapScore(const std::vector<Eigen::Vector2d>& points, const CPose2D& mount,
+                           const CPose2D& vehicle) const
 {
   const CPose2D sensor = vehicle + mount;
-  const auto points =
-      correlative::thinPoints(scan.scan().points, relocalizer_.resolution(), std::numeric_limits<double>::infinity());
   return correlative::scoreAt(relocalizer_.grid(), points, {sensor.x(), sensor.y(), sensor.phi()});
 }
 
@@ -179,7 +177,8 @@ LocalizedScan Localizer::track(const tracking::PreparedScan& scan, const CPose2D
 }
 
 LocalizedScan Localizer::searchMap(const tracking::PreparedScan& scan, const CPose2D& mount,
-                                   const std::optional<CPose2D>& odometry, double t)
+                                   const std::vector<Eigen::Vector2d>& points, const std::optional<CPose2D>& odometry,
+                                   double t)
 {
   LocalizedScan out;
   out.state = LocalizationState::Lost;
@@ -189,7 +188,7 @@ LocalizedScan Localizer::searchMap(const tracking::PreparedScan& scan, const CPo
   if (!due) return out;
   last_search_time_ = t;
   out.searched_map = true;
-  const std::optional<NodeMatch> m = relocalize(scan, mount);
+  const std::optional<NodeMatch> m = relocalize(scan, mount, points);
   if (!m) return out;
   lost_ = false;
   out.state = LocalizationState::Relocalized;
@@ -210,15 +209,19 @@ LocalizedScan Localizer::localize(const sensor::ScanInput& input)
   nodes_.asMapSensor(s);
   const tracking::PreparedScan scan(std::move(s), forms_);
   const double interval = last_time_ ? t - *last_time_ : 0.0;
+  // The points the map's grid scores (all of them, one per map cell): the whole-map search's
+  // and the map score's.
+  const std::vector<Eigen::Vector2d> map_points =
+      correlative::thinPoints(scan.scan().points, relocalizer_.resolution(), std::numeric_limits<double>::infinity());
 
   LocalizedScan out;
   // The first scan after an initial pose is at that pose: the motion before it is not counted.
   const CPose2D motion = last_matched_time_ ? predictedMotion(input.odometry_increment, interval) : CPose2D();
   if (!lost_) out = track(scan, mount, motion, t);
   // Lost before this scan, or by it: the whole map is searched when due.
-  if (lost_) out = searchMap(scan, mount, input.odometry_increment, t);
+  if (lost_) out = searchMap(scan, mount, map_points, input.odometry_increment, t);
   out.valid_rays = scan.scan().size();
-  if (out.state != LocalizationState::Lost) out.map_score = mapScore(scan, mount, out.pose);
+  if (out.state != LocalizationState::Lost) out.map_score = mapScore(map_points, mount, out.pose);
   if (interval > 0) last_interval_ = interval;
   last_time_ = t;
   return out;

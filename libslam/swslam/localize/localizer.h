@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace swslam::localize
 {
@@ -84,8 +85,10 @@ class Localizer
                       const mrpt::poses::CPose2D& vehicle_guess, bool measured);
   /** The whole-map search and its verification; none if the place is not distinct or the
    * match does not confirm it. */
-  std::optional<NodeMatch> relocalize(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount);
-  double mapScore(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+  std::optional<NodeMatch> relocalize(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+                                      const std::vector<Eigen::Vector2d>& map_points);
+  /** The mean score of `map_points` (sensor frame) on the map's grid, the vehicle at `vehicle`. */
+  double mapScore(const std::vector<Eigen::Vector2d>& map_points, const mrpt::poses::CPose2D& mount,
                   const mrpt::poses::CPose2D& vehicle) const;
   /** The vehicle's motion since the last scan, `interval` seconds ago. */
   mrpt::poses::CPose2D predictedMotion(const std::optional<mrpt::poses::CPose2D>& odometry, double interval) const;
@@ -95,6 +98,7 @@ class Localizer
                       const mrpt::poses::CPose2D& motion, double t);
   /** Lost: the whole map searched if relocalize_interval has passed since the last search. */
   LocalizedScan searchMap(const tracking::PreparedScan& scan, const mrpt::poses::CPose2D& mount,
+                          const std::vector<Eigen::Vector2d>& map_points,
                           const std::optional<mrpt::poses::CPose2D>& odometry, double t);
 
   const MapNodes& nodes_;
