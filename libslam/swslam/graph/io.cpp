@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -26,6 +27,7 @@ struct EdgeRecord
   mrpt::poses::CPosePDFGaussianInf z;
   EdgeKind kind;
   bool switched_off;
+  bool merged;  ///< "kind=merged": `to` is merged into `from` (PoseGraph::merge)
 };
 
 /** Reads exactly `n` numbers and nothing else; false on any parse error. strtod reads
@@ -192,8 +194,9 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
       else  // TORO: I11 I12 I22 I33 I13 I23
         I.asEigen() << v[3], v[4], v[7], v[4], v[5], v[8], v[7], v[8], v[6];
       mrpt::poses::CPosePDFGaussianInf z(mrpt::poses::CPose2D(v[0], v[1], v[2]), I);
-      edges.push_back({line, PoseGraph::TNodeID(id1), PoseGraph::TNodeID(id2), z,
-                       edgeKindOf(comment, id1, id2), comment.find("switched_off") != std::string::npos});
+      edges.push_back({line, PoseGraph::TNodeID(id1), PoseGraph::TNodeID(id2), z, edgeKindOf(comment, id1, id2),
+                       comment.find("switched_off") != std::string::npos,
+                       comment.find("kind=merged") != std::string::npos});
     }
     else if (key == "FIX")
     {
@@ -214,14 +217,31 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
   rep.placed_vertices = placeMissingVertices(graph, edges, rep.placed_pieces);
   for (const auto& e : edges)
   {
+    if (e.merged) continue;
     try
     {
-      graph.addEdge(e.from, e.to, e.z, e.kind);
-      if (e.switched_off) rep.switched_off.push_back(graph.edgeCount() - 1);
+      const auto added = graph.addEdge(e.from, e.to, e.z, e.kind);
+      if (e.switched_off && added) rep.switched_off.push_back(*added);
     }
     catch (const std::invalid_argument& ex)
     {
       throw std::runtime_error(lineTag(source, e.line) + ex.what());
+    }
+  }
+  // Merged nodes last, in id order (an anchor is older than the nodes merged into it).
+  std::vector<const EdgeRecord*> merges;
+  for (const auto& e : edges)
+    if (e.merged) merges.push_back(&e);
+  std::stable_sort(merges.begin(), merges.end(), [](auto* a, auto* b) { return a->to < b->to; });
+  for (const EdgeRecord* e : merges)
+  {
+    try
+    {
+      graph.merge(e->to, e->from, e->z);
+    }
+    catch (const std::invalid_argument& ex)
+    {
+      throw std::runtime_error(lineTag(source, e->line) + ex.what());
     }
   }
   if (have_fix)
@@ -264,6 +284,14 @@ void writeGraph(const PoseGraph& graph, std::ostream& out, const std::vector<siz
     out << "EDGE_SE2 " << e.from << ' ' << e.to << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi()
         << ' ' << I(0, 0) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2)
         << ' ' << I(2, 2) << " # kind=" << edgeKindName(e.kind) << (off[k] ? " switched_off" : "") << '\n';
+  }
+  for (const auto& [id, a] : graph.merged())
+  {
+    const auto& m = a.z.mean;
+    const auto& I = a.z.cov_inv;
+    out << "EDGE_SE2 " << a.anchor << ' ' << id << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi() << ' ' << I(0, 0)
+        << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2) << ' ' << I(2, 2)
+        << " # kind=merged\n";
   }
 }
 

@@ -11,7 +11,8 @@
 // (dx, dy, dtheta) is the pose of `to` in the frame of `from`. Text after '#' or '|' is a
 // comment; an edge comment "kind=<name>" (consecutive, dense_neighbour, loop,
 // odometry_prior) sets the edge kind, otherwise to == from + 1 is consecutive and any other
-// edge a loop; "switched_off" in it lists the edge in GraphLoadReport::switched_off.
+// edge a loop; "switched_off" in it lists the edge in GraphLoadReport::switched_off;
+// "kind=merged" merges `to` into `from` (PoseGraph::merge; applied after the other edges).
 //
 // Skipped with a count and the line numbers: blank and comment lines (not counted), lines
 // with an unknown keyword or unparseable fields, EQUIV lines (node merging is not
@@ -24,8 +25,8 @@
 // of a missing vertex, a file with no vertex and no edge.
 //
 // Written: g2o form (VERTEX_SE2, FIX root, EDGE_SE2 ... # kind=<name>, and " switched_off" for
-// an edge the robust kernel switched off), full precision, which MRPT, g2o and this reader all
-// load.
+// an edge the robust kernel switched off; then each merged node's attachment, # kind=merged),
+// full precision, which MRPT, g2o and this reader all load.
 
 #include <swslam/graph/pose_graph.h>
 

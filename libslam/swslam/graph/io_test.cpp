@@ -157,6 +157,38 @@ TEST(GraphIo, AnEdgeTheKernelSwitchedOffIsMarkedAndStillLoadsWithItsKind)
   EXPECT_EQ(mrpt_graph.edgeCount(), 2u);
 }
 
+TEST(GraphIo, AMergedNodeRoundTripsWithItsAttachment)
+{
+  auto g = read(std::string(kVertices) + "VERTEX2 3 0.2 0.1 0\n"
+                                         "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1 # kind=consecutive\n"
+                                         "EDGE_SE2 1 2 1 0 0 1 0 0 1 0 1 # kind=consecutive\n"
+                                         "EDGE_SE2 2 3 -1.8 0.1 0 1 0 0 1 0 1 # kind=consecutive\n"
+                                         "EDGE_SE2 0 3 0.2 0.1 0 50 0 0 50 0 50 # kind=loop\n");
+  mrpt::math::CMatrixDouble33 info;
+  info.setIdentity();
+  info *= 50.0;
+  const mrpt::poses::CPosePDFGaussianInf z(mrpt::poses::CPose2D(0.2, 0.1, 0), info);
+  g.merge(3, 0, z);
+  std::ostringstream out;
+  swslam::graph::writeGraph(g, out);
+  EXPECT_NE(out.str().find("EDGE_SE2 0 3 0.2"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("# kind=merged\n"), std::string::npos) << out.str();
+  const auto back = read(out.str());
+  ASSERT_TRUE(back.isMerged(3));
+  EXPECT_EQ(back.merged().at(3).anchor, 0u);
+  EXPECT_DOUBLE_EQ(back.merged().at(3).z.cov_inv(1, 1), 50.0);
+  ASSERT_EQ(back.edgeCount(), g.edgeCount());
+  for (size_t k = 0; k < g.edgeCount(); ++k)
+  {
+    EXPECT_EQ(back.edge(k).from, g.edge(k).from);
+    EXPECT_EQ(back.edge(k).to, g.edge(k).to);
+    EXPECT_EQ(back.edge(k).measurement->mean.x(), g.edge(k).measurement->mean.x());
+  }
+  // An attachment into a node that is not there, or of the root, names its line.
+  const std::string bad = std::string(kVertices) + "EDGE_SE2 1 0 1 0 0 1 0 0 1 0 1 # kind=merged\n";
+  EXPECT_THROW(read(bad), std::runtime_error);
+}
+
 TEST(GraphIo, VerticesOnlyTheEdgesNameArePlacedAlongTheOdometryChain)
 {
   // An edge-only g2o file (SE-Sync's CSAIL, M3500): the chain 0-1-2, a gap, 3-4, a loop 1 -> 3

@@ -1,5 +1,7 @@
 #include <swslam/graph/pose_graph.h>
 
+#include <swslam/graph/node_merge.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -32,7 +34,8 @@ void checkInformationMatrix(const mrpt::math::CMatrixDouble33& info, const std::
 }
 
 PoseGraph::PoseGraph(const PoseGraph& other)
-    : net_(other.net_), edges_(other.edges_), adjacency_(other.adjacency_)
+    : net_(other.net_), edges_(other.edges_), adjacency_(other.adjacency_), merged_(other.merged_),
+      anchored_(other.anchored_)
 {
   relinkEdges(other);
 }
@@ -44,6 +47,8 @@ PoseGraph& PoseGraph::operator=(const PoseGraph& other)
     net_ = other.net_;
     edges_ = other.edges_;
     adjacency_ = other.adjacency_;
+    merged_ = other.merged_;
+    anchored_ = other.anchored_;
     relinkEdges(other);
   }
   return *this;
@@ -70,8 +75,8 @@ void PoseGraph::addNode(TNodeID id, const mrpt::poses::CPose2D& pose)
   adjacency_[id];
 }
 
-size_t PoseGraph::addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
-                          EdgeKind kind)
+std::optional<size_t> PoseGraph::addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
+                                         EdgeKind kind)
 {
   const std::string what = "edge " + std::to_string(from) + " -> " + std::to_string(to);
   if (!hasNode(from)) throw std::invalid_argument(what + ": missing " + nodeName(from));
@@ -79,11 +84,85 @@ size_t PoseGraph::addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFG
   if (from == to) throw std::invalid_argument(what + ": an edge must join two different nodes");
   if (!finitePose(z.mean)) throw std::invalid_argument(what + ": measurement is not finite");
   checkInformationMatrix(z.cov_inv, what);
-  const auto it = net_.edges.emplace(std::make_pair(from, to), z);
-  edges_.push_back(Edge{from, to, kind, &it->second});
-  adjacency_[from].push_back(edges_.size() - 1);
-  adjacency_[to].push_back(edges_.size() - 1);
-  return edges_.size() - 1;
+  const auto from_merged = merged_.find(from), to_merged = merged_.find(to);
+  if (from_merged == merged_.end() && to_merged == merged_.end())
+  {
+    const auto it = net_.edges.emplace(std::make_pair(from, to), z);
+    edges_.push_back(Edge{from, to, kind, &it->second});
+    adjacency_[from].push_back(edges_.size() - 1);
+    adjacency_[to].push_back(edges_.size() - 1);
+    return edges_.size() - 1;
+  }
+  const TNodeID a = from_merged == merged_.end() ? from : from_merged->second.anchor;
+  const TNodeID b = to_merged == merged_.end() ? to : to_merged->second.anchor;
+  if (a == b) return std::nullopt;
+  return addEdge(a, b,
+                 carryEdge(from_merged == merged_.end() ? nullptr : &from_merged->second.z, z,
+                           to_merged == merged_.end() ? nullptr : &to_merged->second.z),
+                 kind);
+}
+
+void PoseGraph::removeEdge(size_t index)
+{
+  const Edge removed = edges_.at(index);
+  auto [first, last] = net_.edges.equal_range(std::make_pair(removed.from, removed.to));
+  for (; first != last; ++first)
+    if (&first->second == removed.measurement)
+    {
+      net_.edges.erase(first);
+      break;
+    }
+  auto forget = [this](TNodeID node, size_t k) {
+    auto& list = adjacency_[node];
+    list.erase(std::find(list.begin(), list.end(), k));
+  };
+  forget(removed.from, index);
+  forget(removed.to, index);
+  const size_t moved = edges_.size() - 1;
+  if (moved != index)
+  {
+    edges_[index] = edges_[moved];
+    for (const TNodeID node : {edges_[index].from, edges_[index].to})
+      for (size_t& k : adjacency_[node])
+        if (k == moved) k = index;
+  }
+  edges_.pop_back();
+}
+
+void PoseGraph::merge(TNodeID id, TNodeID anchor, const mrpt::poses::CPosePDFGaussianInf& z)
+{
+  const std::string what = "merging " + nodeName(id) + " into " + nodeName(anchor);
+  if (!hasNode(id) || !hasNode(anchor)) throw std::invalid_argument(what + ": missing node");
+  if (id == anchor) throw std::invalid_argument(what + ": a node cannot be merged into itself");
+  if (isMerged(id)) throw std::invalid_argument(what + ": it is merged already");
+  if (anchored_.count(id)) throw std::invalid_argument(what + ": other nodes are merged into it");
+  if (isMerged(anchor)) throw std::invalid_argument(what + ": the anchor is merged itself");
+  if (id == root()) throw std::invalid_argument(what + ": the root (gauge) stays a node");
+  if (!finitePose(z.mean)) throw std::invalid_argument(what + ": attachment is not finite");
+  checkInformationMatrix(z.cov_inv, what);
+  struct Carried
+  {
+    TNodeID from, to;
+    mrpt::poses::CPosePDFGaussianInf z;
+    EdgeKind kind;
+  };
+  std::vector<Carried> carried;
+  while (!adjacency_[id].empty())
+  {
+    const size_t k = adjacency_[id].back();
+    const Edge& e = edges_[k];
+    carried.push_back({e.from, e.to, *e.measurement, e.kind});
+    removeEdge(k);
+  }
+  merged_.emplace(id, Attachment{anchor, z});
+  anchored_[anchor]++;
+  net_.nodes[id] = pose(anchor) + z.mean;
+  for (auto it = carried.rbegin(); it != carried.rend(); ++it) addEdge(it->from, it->to, it->z, it->kind);
+}
+
+void PoseGraph::placeMerged()
+{
+  for (const auto& [id, a] : merged_) net_.nodes[id] = pose(a.anchor) + a.z.mean;
 }
 
 const mrpt::poses::CPose2D& PoseGraph::pose(TNodeID id) const

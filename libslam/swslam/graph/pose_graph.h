@@ -2,7 +2,8 @@
 // The pose graph: a thin wrapper around mrpt::graphs::CNetworkOfPoses2DInf that adds, per
 // edge, the kind of constraint (which decides whether it is robustified) and, per node,
 // the list of its edges, so that a window of nodes finds its edges without scanning the
-// whole graph. Every pose and edge is validated on insertion.
+// whole graph, and the nodes merged into others (node_merge.h). Every pose and edge is
+// validated on insertion.
 
 #include <swslam/graph/edge_kind.h>
 
@@ -10,6 +11,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -42,9 +44,31 @@ class PoseGraph
 
   /** Adds an edge and returns its index; throws std::invalid_argument naming the problem
    * if a node is missing, from == to, the mean is not finite, or the information matrix
-   * is not finite, not symmetric or not positive definite. */
-  size_t addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
-                 EdgeKind kind);
+   * is not finite, not symmetric or not positive definite. An edge naming a merged node is
+   * carried to its anchor (carryEdge); one that then joins a node to itself is not added
+   * (nothing returned). */
+  std::optional<size_t> addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
+                                EdgeKind kind);
+
+  /** Where a merged node is held: `z` is its pose seen from `anchor`. */
+  struct Attachment
+  {
+    TNodeID anchor;
+    mrpt::poses::CPosePDFGaussianInf z;
+  };
+  /** Merges node `id` into `anchor`: `id` is no longer optimized, its pose is anchor's
+   * composed with z, and its edges, as every later edge that names it, are carried to
+   * `anchor` (those that would join `anchor` to itself are dropped). Edge indices change.
+   * Throws std::invalid_argument if a node is missing, id == anchor, `id` is merged already
+   * or anchors a merged node, `anchor` is merged, the root would be merged, or z is not
+   * finite with a positive-definite information. */
+  void merge(TNodeID id, TNodeID anchor, const mrpt::poses::CPosePDFGaussianInf& z);
+  bool isMerged(TNodeID id) const { return merged_.count(id) != 0; }
+  const std::map<TNodeID, Attachment>& merged() const { return merged_; }
+  /** Nodes not merged into another. */
+  size_t liveNodeCount() const { return nodeCount() - merged_.size(); }
+  /** Places every merged node at its anchor's pose composed with its attachment. */
+  void placeMerged();
 
   bool hasNode(TNodeID id) const { return adjacency_.count(id) != 0; }
   const mrpt::poses::CPose2D& pose(TNodeID id) const;
@@ -54,13 +78,13 @@ class PoseGraph
   size_t nodeCount() const { return net_.nodes.size(); }
   size_t edgeCount() const { return edges_.size(); }
   const Edge& edge(size_t index) const { return edges_.at(index); }
-  /** Indices of the edges touching node `id` (both directions). */
+  /** Indices of the edges touching node `id` (both directions; none for a merged node). */
   const std::vector<size_t>& edgesOf(TNodeID id) const;
 
   TNodeID root() const { return net_.root; }
   void setRoot(TNodeID id);
 
-  /** The newest `n` node ids (highest ids), oldest first. */
+  /** The newest `n` node ids (highest ids), oldest first, merged ones included. */
   std::vector<TNodeID> newestNodes(size_t n) const;
   /** All node ids in increasing order. */
   std::vector<TNodeID> nodeIds() const;
@@ -71,10 +95,14 @@ class PoseGraph
  private:
   /** After copying `other`, points edges_ at this graph's own measurements. */
   void relinkEdges(const PoseGraph& other);
+  /** Removes edge `index`; the last edge takes its index. */
+  void removeEdge(size_t index);
 
   Network net_;
   std::vector<Edge> edges_;
   std::unordered_map<TNodeID, std::vector<size_t>> adjacency_;
+  std::map<TNodeID, Attachment> merged_;
+  std::unordered_map<TNodeID, size_t> anchored_;  ///< how many merged nodes each anchor holds
 };
 
 /** Throws std::invalid_argument(`what` + reason) unless `info` is finite, symmetric and

@@ -80,10 +80,13 @@ GraphSubproblem windowSubproblem(const PoseGraph& graph, size_t window_size,
 {
   if (graph.nodeCount() == 0) throw std::invalid_argument("window: the graph has no nodes");
   if (window_size == 0) throw std::invalid_argument("window: window_size is 0");
-  const std::vector<PoseGraph::TNodeID> window = graph.newestNodes(window_size);
+  std::vector<PoseGraph::TNodeID> window = graph.newestNodes(window_size);
+  window.erase(std::remove_if(window.begin(), window.end(), [&](auto id) { return graph.isMerged(id); }),
+               window.end());
   SubproblemBuilder builder(graph, params);
   for (const auto id : window) builder.addNode(id, false);
   const size_t window_count = window.size();
+  if (window_count == 0) return std::move(builder.result());  // every newest node merged: nothing free
   // Each edge once: from the window node at its `from` end, or at its `to` end when the
   // `from` node lies outside the window.
   for (const auto id : window)
@@ -110,8 +113,9 @@ GraphSubproblem fullSubproblem(const PoseGraph& graph, const GraphOptimizerParam
 {
   if (graph.nodeCount() == 0) throw std::invalid_argument("full optimization: empty graph");
   SubproblemBuilder builder(graph, params);
-  builder.reserve(graph.nodeCount(), graph.edgeCount());
-  for (const auto id : graph.nodeIds()) builder.addNode(id, id == graph.root());
+  builder.reserve(graph.liveNodeCount(), graph.edgeCount());
+  for (const auto id : graph.nodeIds())
+    if (!graph.isMerged(id)) builder.addNode(id, id == graph.root());
   for (size_t k = 0; k < graph.edgeCount(); ++k) builder.addEdge(k);
   return std::move(builder.result());
 }
@@ -124,6 +128,7 @@ void writeBack(const GraphSubproblem& sub, PoseGraph& graph)
     const geometry::Pose2& p = sub.problem.poses[n];
     graph.setPose(sub.node_ids[n], mrpt::poses::CPose2D(p.x(), p.y(), p.z()));
   }
+  graph.placeMerged();
 }
 
 namespace

@@ -22,17 +22,19 @@ struct GraphSubproblem
   std::vector<size_t> edge_indices;          ///< graph edge index, parallel to problem.edges
 };
 
-/** The newest `window_size` nodes free, their outside neighbours fixed. If nothing outside
+/** The newest `window_size` nodes free (those merged into others left out: they are not
+ * optimized), their outside neighbours fixed. If nothing outside
  * anchors the window (the window holds the whole connected graph), the graph's root is
  * fixed if it is in the window, otherwise the oldest window node. Throws
  * std::invalid_argument for an empty graph or window_size == 0. */
 GraphSubproblem windowSubproblem(const PoseGraph& graph, size_t window_size,
                                  const GraphOptimizerParams& params);
 
-/** Every node free except the root (gauge). Throws std::invalid_argument if empty. */
+/** Every node free except the root (gauge) and the merged ones. Throws std::invalid_argument
+ * if empty. */
 GraphSubproblem fullSubproblem(const PoseGraph& graph, const GraphOptimizerParams& params);
 
-/** Copies the free poses of `sub` back into `graph`. */
+/** Copies the free poses of `sub` back into `graph` and places the merged nodes. */
 void writeBack(const GraphSubproblem& sub, PoseGraph& graph);
 
 /** Optimizes the sliding window of params.window_size newest nodes; the graph is updated

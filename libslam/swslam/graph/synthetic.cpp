@@ -124,7 +124,7 @@ std::vector<size_t> addFalseLoops(PoseGraph& graph, const FalseLoopOptions& o)
     z.mean = mrpt::poses::CPose2D(offset(rng), offset(rng), angle(rng));
     z.cov_inv = info;
     for (size_t t = 0; t < run && added.size() < o.count; ++t)
-      added.push_back(graph.addEdge(ids[a + t], ids[b + t], z, EdgeKind::Loop));
+      added.push_back(*graph.addEdge(ids[a + t], ids[b + t], z, EdgeKind::Loop));
   }
   return added;
 }

@@ -52,7 +52,7 @@ std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest,
   {
     if (it->first + gap > newest) break;
     const double d = (it->second.translation() - here.translation()).norm();
-    if (d <= p.max_distance && !linked(it->first)) near.emplace_back(d, it->first);
+    if (d <= p.max_distance && !graph.isMerged(it->first) && !linked(it->first)) near.emplace_back(d, it->first);
   }
   std::sort(near.begin(), near.end());
   near.resize(std::min(near.size(), static_cast<size_t>(p.max_candidates)));

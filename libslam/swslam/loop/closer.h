@@ -56,8 +56,8 @@ struct LoopCheck
 };
 const char* toString(LoopCheck::Verdict v);
 
-/** Candidates for node `newest`: nodes with id <= newest - min_index_gap whose graph pose is
- * within max_distance and that share no edge with `newest` yet, nearest first, at most
+/** Candidates for node `newest`: nodes with id <= newest - min_index_gap, not merged into
+ * another, whose graph pose is within max_distance and that share no edge with `newest` yet, nearest first, at most
  * max_candidates; none when disabled. One linear pass over the older node poses (a distance
  * each, no scan work). Throws std::invalid_argument if `newest` is not in the graph. */
 std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest, const LoopClosureParams& p);

@@ -15,7 +15,8 @@ std::vector<std::pair<size_t, size_t>> unlinkedClosePairs(const graph::PoseGraph
 {
   std::vector<std::pair<size_t, size_t>> pairs;
   std::vector<double> dist;  // of each pair
-  const auto ids = graph.nodeIds();
+  auto ids = graph.nodeIds();  // the merged ones hold no scan of their own
+  ids.erase(std::remove_if(ids.begin(), ids.end(), [&](size_t id) { return graph.isMerged(id); }), ids.end());
   std::vector<size_t> linked;  // the other ends of node i's edges
   for (size_t a = 0; a < ids.size(); ++a)
   {

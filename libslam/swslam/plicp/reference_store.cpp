@@ -54,6 +54,7 @@ std::shared_ptr<const ReferenceScan> ReferenceStore::get(size_t id) const
     if (id >= compact_.size())
       throw std::out_of_range("ReferenceStore: no node " + std::to_string(id) + " (" +
                               std::to_string(compact_.size()) + " added)");
+    if (!compact_[id]) throw std::out_of_range("ReferenceStore: node " + std::to_string(id) + "'s scan was released");
     if (const auto it = built_.find(id); it != built_.end())
     {
       uses_.splice(uses_.begin(), uses_, it->second.use);
@@ -80,6 +81,19 @@ void ReferenceStore::keep(size_t id, std::shared_ptr<const ReferenceScan> built)
   }
 }
 
+void ReferenceStore::release(size_t id)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (id >= compact_.size())
+    throw std::out_of_range("ReferenceStore: no node " + std::to_string(id) + " to release");
+  compact_[id].reset();
+  if (const auto it = built_.find(id); it != built_.end())
+  {
+    uses_.erase(it->second.use);
+    built_.erase(it);
+  }
+}
+
 size_t ReferenceStore::size() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -96,7 +110,8 @@ size_t ReferenceStore::bytes() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   size_t b = 0;
-  for (const auto& c : compact_) b += c->bytes();
+  for (const auto& c : compact_)
+    if (c) b += c->bytes();
   for (const auto& [id, built] : built_) b += referenceScanBytes(*built.scan);
   return b;
 }

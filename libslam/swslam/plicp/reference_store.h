@@ -34,8 +34,12 @@ class ReferenceStore
   void add(size_t id, std::shared_ptr<const ReferenceScan> built);
 
   /** Node `id`'s reference scan, rebuilt if it is no longer kept. Throws std::out_of_range for
-   * an id not added. */
+   * an id not added or released. */
   std::shared_ptr<const ReferenceScan> get(size_t id) const;
+
+  /** Forgets node `id`'s scan (a node merged into another is not matched again); its id
+   * stays taken. Throws std::out_of_range for an id not added. */
+  void release(size_t id);
 
   size_t size() const;
   /** Reference forms held now. */

@@ -1,0 +1,22 @@
+#pragma once
+// Carrying an edge to the node another one was merged into (a reduced pose graph, Johannsson
+// et al., ICRA 2013; doc/graph-optimization.md): a merged node is held at a measured pose
+// relative to its anchor, so an edge naming it says as much of the anchor, with the
+// attachment's uncertainty composed into its own. Measurements are as the graph keeps them:
+// the mean is the pose of `to` seen from `from`, the information weighs the error of
+// se2_error.h (in the measurement's own frame).
+
+#include <mrpt/poses/CPosePDFGaussianInf.h>
+
+namespace swslam::graph
+{
+/** The edge i -> j with measurement `z`, where i is held at `from_attachment` (its pose seen
+ * from its anchor a) and j at `to_attachment` (seen from its anchor b), either one null when
+ * that end is not merged: the edge a -> b (or a -> j, i -> b), mean
+ * from_attachment (+) z (+) to_attachment^-1 and the covariance of that composition, the
+ * three measurements taken as independent. */
+mrpt::poses::CPosePDFGaussianInf carryEdge(const mrpt::poses::CPosePDFGaussianInf* from_attachment,
+                                           const mrpt::poses::CPosePDFGaussianInf& z,
+                                           const mrpt::poses::CPosePDFGaussianInf* to_attachment);
+
+}  // namespace swslam::graph
