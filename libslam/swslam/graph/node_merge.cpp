@@ -1,5 +1,7 @@
 #include <swslam/graph/node_merge.h>
 
+#include <swslam/geometry/se2_error.h>
+
 #include <mrpt/poses/CPosePDFGaussian.h>
 
 #include <Eigen/Dense>
@@ -51,6 +53,31 @@ CPosePDFGaussianInf carryEdge(const CPosePDFGaussianInf* from_attachment, const 
     out += back;
   }
   return asMeasurement(out);
+}
+
+std::optional<CPosePDFGaussianInf> fuseAgreeing(const CPosePDFGaussianInf& a, const CPosePDFGaussianInf& b,
+                                                double gate)
+{
+  // b's error seen in a's frame: delta = t2v(a^-1 (+) b); b's information turned into that
+  // frame by the small rotation between the two.
+  const mrpt::poses::CPose2D d = b.mean - a.mean;
+  const Eigen::Vector3d delta(d.x(), d.y(), d.phi());
+  const Eigen::Matrix3d J = turn(d.phi());
+  const Eigen::Matrix3d Ia = a.cov_inv.asEigen(), Ib = J * b.cov_inv.asEigen() * J.transpose();
+  const Eigen::Matrix3d S = Ia.inverse() + Ib.inverse();
+  if (!(delta.dot(S.ldlt().solve(delta)) <= gate)) return std::nullopt;
+  // w on a grid from 0.5 outwards: the first of the largest determinant wins a tie.
+  double best_w = 0.5, best_det = -1;
+  for (int k = 0; k <= 20; ++k)
+  {
+    const double w = 0.5 + (k % 2 ? 1 : -1) * 0.05 * ((k + 1) / 2);
+    const double det = (w * Ia + (1 - w) * Ib).determinant();
+    if (det > best_det * (1 + 1e-12)) best_det = det, best_w = w;
+  }
+  Eigen::Matrix3d I = best_w * Ia + (1 - best_w) * Ib;
+  I = 0.5 * (I + I.transpose());
+  const Eigen::Vector3d mu = I.ldlt().solve((1 - best_w) * Ib * delta);
+  return CPosePDFGaussianInf(a.mean + mrpt::poses::CPose2D(mu.x(), mu.y(), mu.z()), mrpt::math::CMatrixDouble33(I));
 }
 
 }  // namespace swslam::graph

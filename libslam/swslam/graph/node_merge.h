@@ -8,6 +8,8 @@
 
 #include <mrpt/poses/CPosePDFGaussianInf.h>
 
+#include <optional>
+
 namespace swslam::graph
 {
 /** The edge i -> j with measurement `z`, where i is held at `from_attachment` (its pose seen
@@ -18,5 +20,19 @@ namespace swslam::graph
 mrpt::poses::CPosePDFGaussianInf carryEdge(const mrpt::poses::CPosePDFGaussianInf* from_attachment,
                                            const mrpt::poses::CPosePDFGaussianInf& z,
                                            const mrpt::poses::CPosePDFGaussianInf* to_attachment);
+
+/** Two measurements of the same relative pose, one if they agree: the squared Mahalanobis
+ * distance between them (their covariances summed) is at most `gate`. They are fused by
+ * covariance intersection (Julier and Uhlmann 1997), linearized at `a`: information
+ * w Ia + (1 - w) Ib, the w of largest determinant (0.5 on a tie), and the mean weighted alike.
+ * Matches of the same two scans on every lap are not independent (their errors come from the
+ * same geometry), and covariance intersection stays consistent whatever their correlation:
+ * a revisit's carried edges between the same two nodes stay one edge, no more certain than
+ * the best of them. None when they disagree (both stay, for the robust kernel to weigh). */
+std::optional<mrpt::poses::CPosePDFGaussianInf> fuseAgreeing(const mrpt::poses::CPosePDFGaussianInf& a,
+                                                             const mrpt::poses::CPosePDFGaussianInf& b, double gate);
+
+/** The gate of fuseAgreeing for carried edges: chi-square, three degrees of freedom, 0.99. */
+inline constexpr double kFuseGate = 11.34;
 
 }  // namespace swslam::graph

@@ -94,3 +94,45 @@ TEST(NodeMerge, ACarriedEdgeHasChiSquareThreeAtTheTrueAnchors)
   EXPECT_NEAR(from_only / draws, 3.0, 0.2);
   EXPECT_NEAR(to_only / draws, 3.0, 0.2);
 }
+
+TEST(NodeMerge, AgreeingMeasurementsFuseIntoTheirWeightedMeanAndOthersDoNot)
+{
+  const Eigen::Matrix3d info = information(0.05, 0.02);
+  const CPosePDFGaussianInf a(CPose2D(3, 1, 0.5), mrpt::math::CMatrixDouble33(info));
+  const CPosePDFGaussianInf b(a.mean + CPose2D(0.04, -0.02, 0.01), mrpt::math::CMatrixDouble33(info));
+  const auto fused = fuseAgreeing(a, b, kFuseGate);
+  ASSERT_TRUE(fused.has_value());
+  // Equal information: halfway, the same information (no more certain than either).
+  const CPose2D mid = a.mean + CPose2D(0.02, -0.01, 0.005);
+  EXPECT_NEAR(fused->mean.x(), mid.x(), 1e-4);
+  EXPECT_NEAR(fused->mean.y(), mid.y(), 1e-4);
+  EXPECT_NEAR(fused->mean.phi(), mid.phi(), 1e-6);
+  EXPECT_NEAR(fused->cov_inv(0, 0), info(0, 0), 1e-4 * info(0, 0));  // b turned by 0.01 rad
+  const CPosePDFGaussianInf far(a.mean + CPose2D(0.5, 0, 0), mrpt::math::CMatrixDouble33(info));
+  EXPECT_FALSE(fuseAgreeing(a, far, kFuseGate).has_value());
+}
+
+TEST(NodeMerge, AFusedMeasurementIsConsistentWhateverTheCorrelation)
+{
+  // Two noisy measurements of one relative pose, of different information: independent, the
+  // fused one is conservative (chi-square below 3 on average); with one error shared by both
+  // (the same scans matched on two laps), it is still no more certain than it is, where the
+  // information-weighted mean would claim twice the certainty (chi-square near 6).
+  const Pose2 from(1, 2, 0.3), to(4, 0, 2.0);
+  const Eigen::Matrix3d ia = information(0.03, 0.01, 0.0002), ib = information(0.03, 0.012, -0.0001);
+  std::mt19937 rng(9);
+  const int draws = 4000;
+  double independent = 0, shared = 0;
+  for (int d = 0; d < draws; ++d)
+  {
+    const auto f = fuseAgreeing(measure(from, to, ia, rng), measure(from, to, ib, rng), 1e9);
+    ASSERT_TRUE(f.has_value());
+    independent += chi2(from, to, *f);
+    const auto a = measure(from, to, ia, rng);
+    const CPosePDFGaussianInf b(a.mean, mrpt::math::CMatrixDouble33(ib));
+    shared += chi2(from, to, *fuseAgreeing(a, b, 1e9));
+  }
+  EXPECT_LT(independent / draws, 3.0);
+  EXPECT_GT(independent / draws, 1.5);
+  EXPECT_NEAR(shared / draws, 3.0, 0.3);
+}

@@ -96,10 +96,24 @@ std::optional<size_t> PoseGraph::addEdge(TNodeID from, TNodeID to, const mrpt::p
   const TNodeID a = from_merged == merged_.end() ? from : from_merged->second.anchor;
   const TNodeID b = to_merged == merged_.end() ? to : to_merged->second.anchor;
   if (a == b) return std::nullopt;
-  return addEdge(a, b,
-                 carryEdge(from_merged == merged_.end() ? nullptr : &from_merged->second.z, z,
-                           to_merged == merged_.end() ? nullptr : &to_merged->second.z),
-                 kind);
+  const mrpt::poses::CPosePDFGaussianInf carried =
+      carryEdge(from_merged == merged_.end() ? nullptr : &from_merged->second.z, z,
+                to_merged == merged_.end() ? nullptr : &to_merged->second.z);
+  // Into an edge of the same kind between the same nodes that it agrees with: revisits then
+  // add information, not edges.
+  for (const size_t k : adjacency_[a])
+  {
+    const Edge& e = edges_[k];
+    if (e.from != a || e.to != b || e.kind != kind) continue;
+    if (const auto fused = fuseAgreeing(*e.measurement, carried, kFuseGate))
+    {
+      auto [first, last] = net_.edges.equal_range(std::make_pair(a, b));
+      for (; first != last; ++first)
+        if (&first->second == e.measurement) first->second = *fused;
+      return k;
+    }
+  }
+  return addEdge(a, b, carried, kind);
 }
 
 void PoseGraph::removeEdge(size_t index)

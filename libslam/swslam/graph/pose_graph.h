@@ -46,7 +46,8 @@ class PoseGraph
    * if a node is missing, from == to, the mean is not finite, or the information matrix
    * is not finite, not symmetric or not positive definite. An edge naming a merged node is
    * carried to its anchor (carryEdge); one that then joins a node to itself is not added
-   * (nothing returned). */
+   * (nothing returned), and one that agrees with an edge of its kind between the same nodes
+   * (same direction) is fused into it (fuseAgreeing; that edge's index returned). */
   std::optional<size_t> addEdge(TNodeID from, TNodeID to, const mrpt::poses::CPosePDFGaussianInf& z,
                                 EdgeKind kind);
 
