@@ -45,7 +45,7 @@ echo "== 1. the valley path driven $laps times"
 read -r peak_kb wall < "$out/time"
 field() { grep -F "| $1" "$out/run/summary.md" | head -1 | awk -F'|' '{print $3}' | sed 's/^ *//; s/ *$//'; }
 echo "valley path x $laps: $(field 'Scans processed'); $(field 'Travelling distance'); wall $wall s ($(field 'Sensor time'))"
-echo "peak RSS $((peak_kb / 1024)) MB; ATE $(field 'ATE (rmse)'); nodes $(field 'Number of graph nodes'); constraints (loops) $(field 'Number of graph constraints')"
+echo "peak RSS $((peak_kb / 1024)) MB; ATE $(field 'ATE (rmse)'); nodes $(field 'Number of graph nodes'), keyframes merged into them $(field 'Keyframes merged' || true); constraints (loops) $(field 'Number of graph constraints')"
 /usr/bin/python3 scripts/plot-long.py "$out/run/stats.csv" "$out/data/valley-laps.gt.tum" "$out/rss.txt" "$laps" "$out/long.png"
 rm -rf "$out/data"
 

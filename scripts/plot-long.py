@@ -14,6 +14,8 @@ distance at its end, graph nodes, peak memory, the slowest tracked scan and the 
 optimization during it, then the end of the run (final optimization and refinement); and
 draws OUT_PNG: memory, graph nodes and full optimization times against distance, the first
 lap (new shore) shaded apart from the revisits. Needs matplotlib (python3-matplotlib).
+Graph nodes are the keyframes made less those merged into earlier nodes: the run folder's
+graph.graph names them ("# kind=merged") and its keyframes.tum gives their stamps.
 """
 
 import bisect
@@ -64,6 +66,23 @@ def read_columns(path, columns):
     return out
 
 
+def merged_stamps(run_dir):
+    """Stamps of the keyframes merged into earlier nodes (none without the run's files)."""
+    graph, keyframes = os.path.join(run_dir, "graph.graph"), os.path.join(run_dir, "keyframes.tum")
+    if not (os.path.isfile(graph) and os.path.isfile(keyframes)):
+        return []
+    ids = []
+    with open(graph) as f:
+        for line in f:
+            if line.startswith("EDGE_SE2 ") and "kind=merged" in line:
+                ids.append(int(line.split()[2]))
+    stamps = [t for (t,) in read_columns(keyframes, (0,))]
+    try:
+        return sorted(stamps[i] for i in ids)
+    except IndexError:
+        fail(f"{graph} merges a node that {keyframes} does not list")
+
+
 def main():
     if len(sys.argv) != 6:
         fail("usage: plot-long.py STATS_CSV GROUND_TRUTH_TUM RSS_TXT LAPS OUT_PNG")
@@ -91,10 +110,11 @@ def main():
     rss_d = [dist[min(len(rows) - 1, bisect.bisect_left(work, t / t_end * total))] for t, _ in rss]
     rss_mb = [kb / 1024.0 for _, kb in rss]
 
+    merged = merged_stamps(os.path.dirname(os.path.abspath(stats_path)))
     nodes, count = [], 0
     for r in rows:
         count += r["node"]
-        nodes.append(count)
+        nodes.append(count - bisect.bisect_right(merged, r["t"] + 1e-6))
     body = rows[:-1]  # the last row is the end of the run: final optimization and refinement
 
     print("| lap | distance at its end [m] | graph nodes | nodes added | peak memory [MB] | slowest tracked scan [ms] | full optimizations | slowest [ms] |")

@@ -24,10 +24,10 @@ mrpt::maps::COccupancyGridMap2D regenerateMap(const graph::PoseGraph& graph,
   visitNodeScans(times, 0, log_path, scans, carmen, "regen-map",
                  [&](size_t id, const mrpt::obs::CObservation2DRangeScan::Ptr& obs) {
                    if (!graph.hasNode(id)) throw std::runtime_error("regen-map: the graph has no node " + std::to_string(id));
-                   builder.insert(id, *obs, graph.pose(id));
+                   if (!graph.isMerged(id)) builder.insert(id, *obs, graph.pose(id));
                  });
-  // Every node's scan was found (visitNodeScans throws otherwise).
-  if (report) *report = RegenReport{graph.nodeCount(), graph.nodeCount()};
+  // Every node's scan was found (visitNodeScans throws otherwise); a merged one is not mapped.
+  if (report) *report = RegenReport{graph.nodeCount(), graph.liveNodeCount()};
   return builder.snapshot();
 }
 

@@ -19,7 +19,7 @@ namespace swslam::app
 struct RegenReport
 {
   size_t nodes = 0;     ///< graph nodes
-  size_t inserted = 0;  ///< nodes whose scan was found in the log and inserted
+  size_t inserted = 0;  ///< nodes whose scan was found in the log and inserted (not the merged ones)
 };
 
 /** Inserts, for each graph node, the log's scan stamped with that node's time in

@@ -20,7 +20,8 @@ system::RunSummary summarizeRun(const system::RunResults& results, double wall_t
   system::RunSummary s;
   s.scans = results.stats.size();
   s.skipped_scans = results.skipped;
-  s.nodes = results.graph.nodeCount();
+  s.nodes = results.graph.liveNodeCount();
+  s.merged_nodes = results.graph.merged().size();
   s.constraints = results.graph.edgeCount();
   s.loops = results.loops;
   s.refinement_pairs = results.refinement_pairs;

@@ -118,8 +118,8 @@ Session readSession(const std::string& dir)
       throw std::invalid_argument("session '" + dir + "': " + name + " is missing (not a folder --save-session wrote?)");
   const auto ini = common::readIniFile(path("session.ini"));
   const size_t format = common::readIniCount(*ini, "session", "format", "session '" + dir + "'");
-  if (format != static_cast<size_t>(kSessionFormat))
-    throw std::invalid_argument("session '" + dir + "': format " + std::to_string(format) + ", this swslam reads " +
+  if (format < 1 || format > static_cast<size_t>(kSessionFormat))
+    throw std::invalid_argument("session '" + dir + "': format " + std::to_string(format) + ", this swslam reads 1 to " +
                                 std::to_string(kSessionFormat) + " (saved by swslam " +
                                 ini->read_string("session", "version", "?") + ")");
   const size_t nodes = common::readIniCount(*ini, "session", "nodes", "session '" + dir + "'");

@@ -25,7 +25,9 @@
 
 namespace swslam::app
 {
-inline constexpr int kSessionFormat = 1;
+/** 2: graph.graph may merge nodes into others ("kind=merged"); a format-1 session has none
+ * and is read as it is. */
+inline constexpr int kSessionFormat = 2;
 
 struct Session
 {

@@ -156,8 +156,8 @@ TEST(Session, ADamagedSessionOrAConfigBesideItIsANamedErrorAndNothingIsWritten)
     ASSERT_NE(at, std::string::npos) << from;
     std::ofstream(path, std::ios::binary | std::ios::trunc) << t.replace(at, from.size(), to);
   };
-  expectRefused(damaged("format", [&](const std::string& d) { replaceIn(d + "/session.ini", "format = 1", "format = 2"); }),
-                "format 2, this swslam reads 1");
+  expectRefused(damaged("format", [&](const std::string& d) { replaceIn(d + "/session.ini", "format = 2", "format = 3"); }),
+                "format 3, this swslam reads 1 to 2");
   expectRefused(damaged("no-graph", [](const std::string& d) { fs::remove(d + "/graph.graph"); }),
                 "graph.graph is missing");
   expectRefused(damaged("short-rawlog",

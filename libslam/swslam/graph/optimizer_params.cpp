@@ -78,6 +78,11 @@ const common::ParamTable<GraphOptimizerParams>& GraphOptimizerParams::table()
                 "only a loop off the graph by more than this...")
           .angle("full_optimization_loop_theta_DEG", &P::full_optimization_loop_theta, between(0, 180),
                  "...or this asks for a full optimization (0 and 0: every loop, the paper's rule)")
+          .integer("max_nodes_per_area", &P::max_nodes_per_area, "", atLeast(0),
+                   "revisits: a node whose loop agrees with the graph is merged into an earlier one once this "
+                   "many earlier nodes lie within node_area_radius (0: every node is kept)",
+                   common::Tier::User)
+          .real("node_area_radius", &P::node_area_radius, "m", above(0), "the area of max_nodes_per_area")
           .integer("max_iterations", &P::max_iterations, "", atLeast(1), "Levenberg-Marquardt iterations at most (paper: 100)")
           .real("lm_initial_lambda", &P::lm_initial_lambda, "", above(0), "initial damping, relative to diag(H)")
           .real("lm_max_lambda", &P::lm_max_lambda, "", above(0), "stop when the damping exceeds this")

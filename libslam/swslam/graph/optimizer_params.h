@@ -90,6 +90,13 @@ struct GraphOptimizerParams
   double full_optimization_loop_xy = 0.05;
   double full_optimization_loop_theta = mrpt::DEG2RAD(0.5);
 
+  /** Revisits (doc/graph-optimization.md, Revisits): a new node that a loop ties to a node of
+   * an earlier pass within node_area_radius, where at least this many nodes of earlier passes
+   * lie within that radius, is merged into it (PoseGraph::merge) once the loop agrees with the
+   * graph (loopCorrectsGraph is false after the window's optimization); 0: every node kept. */
+  size_t max_nodes_per_area = 1;
+  double node_area_radius = 1.0;  ///< [m]
+
   size_t max_iterations = 100;        ///< LM iterations (paper: 100)
   double lm_initial_lambda = 1e-4;    ///< damping relative to diag(H) at the first iteration
   double lm_max_lambda = 1e12;        ///< give up (converged or stuck) beyond this damping

@@ -32,7 +32,7 @@ void GraphModule::addEdge(const graph::Constraint& e, GraphStep& step)
   z.cov_inv = mrpt::math::CMatrixDouble33(e.information);
   try
   {
-    graph_.addEdge(e.from, e.to, z, e.kind);
+    graph_.addEdge(e.from, e.to, z, e.kind);  // an edge a merge folds into one node is not kept
   }
   catch (const std::invalid_argument&)
   {
@@ -61,6 +61,7 @@ void GraphModule::restore(graph::PoseGraph graph, const std::vector<std::shared_
       throw std::invalid_argument("graph: a restored session's nodes must be 0.." + std::to_string(n - 1) + "; " +
                                   std::to_string(id) + " is missing");
     scans_.add(id, scans[id]);
+    if (graph.isMerged(id)) scans_.release(id);
     loop::LoopNode ln;
     ln.id = id;
     ln.path_length = id == 0 ? 0.0 : nodes_.back().path_length + step[id];
@@ -102,14 +103,65 @@ GraphStep GraphModule::addNode(const NewNode& node)
   }
   nodes_.push_back(ln);
 
-  const size_t correcting = closeLoops(id, step);
+  std::vector<graph::Constraint> loops;
+  const size_t correcting = closeLoops(id, step, loops);
   optimize(schedule_.fullNow(id, correcting), step);
+  if (const auto tie = redundantWith(id, loops))
+  {
+    // Held where the window's optimization put it (the loop with the rest of the graph: the
+    // loop alone would carry its own match error into every later edge), as certain as the loop.
+    mrpt::poses::CPosePDFGaussianInf z;
+    z.mean = graph_.pose(id) - graph_.pose(tie->from);
+    z.cov_inv = mrpt::math::CMatrixDouble33(tie->information);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      graph_.merge(id, tie->from, z);
+      step.poses[id] = graph_.pose(id);
+    }
+    step.reinsert.poses.erase(id);  // never mapped
+    scans_.release(id);
+    step.merged_into = tie->from;
+    return step;
+  }
   step.insert = MapInsert{node.scan, id, node.observation,
                           step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
   return step;
 }
 
-size_t GraphModule::closeLoops(size_t id, GraphStep& step)
+std::optional<graph::Constraint> GraphModule::redundantWith(size_t id, const std::vector<graph::Constraint>& loops) const
+{
+  const size_t bound = graph_params_.max_nodes_per_area;
+  const double radius = graph_params_.node_area_radius;
+  if (bound == 0) return std::nullopt;
+  // The loop into `id` from the nearest earlier node that holds a scan and agrees with the graph.
+  const CPose2D& here = graph_.pose(id);
+  std::optional<graph::Constraint> tie;
+  double nearest = radius;
+  for (const graph::Constraint& e : loops)
+  {
+    if (e.to != id || graph_.isMerged(e.from)) continue;
+    const CPose2D relative = here - graph_.pose(e.from);
+    const double d = relative.norm();
+    if (d > nearest || loopCorrectsGraph(relative, e.z, graph_params_.full_optimization_loop_xy,
+                                         graph_params_.full_optimization_loop_theta))
+      continue;
+    nearest = d;
+    tie = e;
+  }
+  if (!tie) return std::nullopt;
+  // The earlier passes' nodes in the area (the recent ones are this pass's own).
+  const auto gap = static_cast<size_t>(loop_params_.min_index_gap);
+  size_t earlier = 0;
+  for (const auto& [n, pose] : graph_.network().nodes)
+  {
+    if (n + gap > id) break;
+    earlier += !graph_.isMerged(n) && (pose.translation() - here.translation()).norm() <= radius;
+  }
+  if (earlier < bound) return std::nullopt;
+  return tie;
+}
+
+size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Constraint>& accepted)
 {
   if (!loop_params_.enabled) return 0;
   size_t correcting = 0;
@@ -140,6 +192,7 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step)
       step.loops_accepted++;
       correcting += corrects;
       loops_++;
+      accepted.push_back(e);
     }
   }
   return correcting;
@@ -196,7 +249,7 @@ void GraphModule::optimize(bool full, GraphStep& step)
   for (const auto id : ids)
   {
     step.poses[id] = graph_.pose(id);
-    step.reinsert.poses[id] = graph_.pose(id);
+    if (!graph_.isMerged(id)) step.reinsert.poses[id] = graph_.pose(id);  // a merged node is not mapped
   }
 }
 

@@ -3,7 +3,9 @@
 // optimizes the sliding window, looks for loops (index gap + distance), verifies them by
 // PLICP and a chi-square gate, and on an accepted loop that corrects the graph optimizes the
 // whole graph (at most once per [graph_optimizer] full_optimization_interval nodes while
-// loops keep coming).
+// loops keep coming). On revisits, a node a loop ties to an earlier node, where the area holds
+// max_nodes_per_area earlier nodes already, is merged into it (PoseGraph::merge): the graph
+// and the map grow with the area mapped, not with the path.
 //
 // Threading: one thread (the graph thread, or the deterministic loop) calls addNode() and
 // optimizeAll() and refineAll(); graphCopy() and the counters may be called from any thread.
@@ -34,6 +36,7 @@ struct GraphStep
   size_t pairs_refined = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
   bool full = false;          ///< the whole graph was optimized
+  std::optional<size_t> merged_into;  ///< the earlier node the new one was merged into (no map insert)
   graph::OptimizationReport report;
   PoseUpdate poses;                ///< optimized node poses (for tracking)
   std::optional<MapInsert> insert;  ///< for the map: the new node's scan, at its optimized pose...
@@ -76,7 +79,11 @@ class GraphModule
   /** Checks node `id`'s loop candidates and adds the corroborated loops (counted in
    * step.loops_accepted); returns how many of them disagree with the graph enough to ask
    * for a full optimization (loopCorrectsGraph). */
-  size_t closeLoops(size_t id, GraphStep& step);
+  size_t closeLoops(size_t id, GraphStep& step, std::vector<graph::Constraint>& accepted);
+  /** The loop that ties new node `id` to the earlier node it is to be merged into
+   * ([graph_optimizer] max_nodes_per_area); none to keep it. The node is then held at its
+   * optimized pose relative to that node, with the loop's information. */
+  std::optional<graph::Constraint> redundantWith(size_t id, const std::vector<graph::Constraint>& loops) const;
   void optimize(bool full, GraphStep& step);
   /** Node `n` for loop closure, with its scan (rebuilt by the store if not kept). */
   loop::LoopNode loopNode(size_t n) const;

@@ -191,6 +191,11 @@ std::string formatRunSummary(const RunSummary& s)
   out << buf;
   std::snprintf(buf, sizeof(buf), "| Number of graph nodes | %zu |\n", s.nodes);
   out << buf;
+  if (s.merged_nodes > 0)
+  {
+    std::snprintf(buf, sizeof(buf), "| Keyframes merged into earlier nodes (revisits) | %zu |\n", s.merged_nodes);
+    out << buf;
+  }
   std::snprintf(buf, sizeof(buf), "| Number of graph constraints (loops) | %zu (%zu) |\n", s.constraints, s.loops);
   out << buf;
   if (s.refinement_pairs > 0)

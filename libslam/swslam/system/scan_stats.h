@@ -55,6 +55,7 @@ TimeSummary summarizeTimes(const std::vector<ScanStats>& rows, double ScanStats:
 struct RunSummary
 {
   size_t scans = 0, skipped_scans = 0, nodes = 0, constraints = 0, loops = 0;
+  size_t merged_nodes = 0;  ///< keyframes merged into earlier nodes (not counted in nodes)
   size_t refinement_pairs = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t fallback_scans = 0;  ///< scans whose pose came from odometry or constant motion
   size_t ambiguous_scans = 0;  ///< scans whose match had a weak direction or a second peak (ScanStats::ambiguous)

@@ -73,7 +73,8 @@ void SlamSystem::resume(const ResumedSession& session)
   }
   graph_.restore(session.graph, scans);
   tracker_.resume(poses, session.observations);
-  for (size_t id = 0; id < n; id++) map_.handle(MapInsert{0, id, session.observations[id], poses[id]});
+  for (size_t id = 0; id < n; id++)
+    if (!session.graph.isMerged(id)) map_.handle(MapInsert{0, id, session.observations[id], poses[id]});
   recorder_.resumed(times);
 }
 

@@ -50,13 +50,13 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanAt(const test::World& world, const C
 
 /** Drives a 7 m radius circle on the water between the two banks of a cluttered scene, a bit
  * more than once round, deterministically; `truth` gets the true poses. */
-RunResults runCircuit(const SystemParams& p, std::vector<common::StampedPose>& truth)
+RunResults runCircuit(const SystemParams& p, std::vector<common::StampedPose>& truth, int laps = 1)
 {
   SlamSystem slam(p, RunMode::Deterministic);
   test::World world = test::clutteredWorld(7);
   std::mt19937 rng(8);
   const double r = 7, speed = 1.5, dt = 0.05;
-  const int n = static_cast<int>(2 * M_PI * r / (speed * dt)) + 40;
+  const int n = static_cast<int>(laps * 2 * M_PI * r / (speed * dt)) + 40;
   for (int k = 0; k < n; k++)
   {
     const double a = speed * dt * k / r;
@@ -266,6 +266,7 @@ TEST(SlamSystem, ClosesALoopAroundACircuit)
   // loop edges are tested below).
   SystemParams p = defaultParams();
   p.final_refinement.enabled = false;
+  p.graph_optimizer.max_nodes_per_area = 0;  // every loop stays an edge (merging: below)
   // Every loop asks for a full optimization (the paper's rule; the default asks only for
   // those that disagree with the graph, see LoopsThatAgreeWithTheGraphAreLeftToTheWindow).
   p.graph_optimizer.full_optimization_loop_xy = 0;
@@ -320,9 +321,35 @@ RunResults circuitWithLoopThresholds(double xy, double theta, std::vector<common
   p.final_refinement.enabled = false;
   p.graph_optimizer.full_optimization_loop_xy = xy;
   p.graph_optimizer.full_optimization_loop_theta = theta;
+  p.graph_optimizer.max_nodes_per_area = 0;  // the same candidates whatever the thresholds
   return runCircuit(p, truth);
 }
 }  // namespace
+
+TEST(SlamSystem, RevisitsAreMergedIntoTheNodesOfTheFirstLap)
+{
+  // The circuit driven three times: the later laps' keyframes that a loop ties to the first
+  // lap's nodes are merged into them, so the graph keeps about one lap's nodes, and the
+  // trajectory is as good as with every node kept.
+  SystemParams p = defaultParams();
+  ASSERT_GT(p.graph_optimizer.max_nodes_per_area, 0u);
+  std::vector<common::StampedPose> truth1, truth3, truth_kept;
+  const RunResults one = runCircuit(p, truth1, 1);
+  const RunResults three = runCircuit(p, truth3, 3);
+  SystemParams keep = p;
+  keep.graph_optimizer.max_nodes_per_area = 0;
+  const RunResults kept = runCircuit(keep, truth_kept, 3);
+  EXPECT_TRUE(kept.graph.merged().empty());
+  EXPECT_GT(three.graph.merged().size(), three.graph.liveNodeCount());
+  EXPECT_LT(three.graph.liveNodeCount(), 1.3 * one.graph.liveNodeCount());
+  EXPECT_EQ(three.graph.nodeCount(), kept.graph.nodeCount());
+  for (size_t k = 0; k < three.graph.edgeCount(); ++k)
+    EXPECT_FALSE(three.graph.isMerged(three.graph.edge(k).from) || three.graph.isMerged(three.graph.edge(k).to));
+  const double ate3 = eval::evaluateTrajectory(three.trajectory, truth3, 0.001).ate.position.rmse;
+  const double ate_kept = eval::evaluateTrajectory(kept.trajectory, truth_kept, 0.001).ate.position.rmse;
+  EXPECT_LT(ate3, 0.1);
+  EXPECT_LT(ate3, ate_kept + 0.02);
+}
 
 TEST(SlamSystem, LoopsThatAgreeWithTheGraphAreLeftToTheWindow)
 {
@@ -356,6 +383,8 @@ TEST(SlamSystem, FinalRefinementLinksCloseUnlinkedNodesOfTheCircuit)
   // beyond those the loop closer counted, and the circle stays right.
   SystemParams p = defaultParams();
   ASSERT_TRUE(p.final_refinement.enabled);
+  // Every node kept: edges carried to the node a revisit merged into may join a pair twice.
+  p.graph_optimizer.max_nodes_per_area = 0;
   const auto loopEdges = [](const graph::PoseGraph& g) {
     size_t n = 0;
     for (size_t i = 0; i < g.edgeCount(); i++) n += g.edge(i).kind == graph::EdgeKind::Loop;
