@@ -124,6 +124,27 @@ std::string lineTag(const std::string& source, size_t line)
   return source + ":" + std::to_string(line) + ": ";
 }
 
+/** The "kind=merged" records, after the other edges, in id order (an anchor is older than the
+ * nodes merged into it). */
+void applyMerges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const std::string& source)
+{
+  std::vector<const EdgeRecord*> merges;
+  for (const auto& e : edges)
+    if (e.merged) merges.push_back(&e);
+  std::stable_sort(merges.begin(), merges.end(), [](auto* a, auto* b) { return a->to < b->to; });
+  for (const EdgeRecord* e : merges)
+  {
+    try
+    {
+      graph.merge(e->to, e->from, e->z);
+    }
+    catch (const std::invalid_argument& ex)
+    {
+      throw std::runtime_error(lineTag(source, e->line) + ex.what());
+    }
+  }
+}
+
 EdgeKind edgeKindOf(const std::string& comment, PoseGraph::TNodeID from, PoseGraph::TNodeID to)
 {
   const auto at = comment.find("kind=");
@@ -228,22 +249,7 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
       throw std::runtime_error(lineTag(source, e.line) + ex.what());
     }
   }
-  // Merged nodes last, in id order (an anchor is older than the nodes merged into it).
-  std::vector<const EdgeRecord*> merges;
-  for (const auto& e : edges)
-    if (e.merged) merges.push_back(&e);
-  std::stable_sort(merges.begin(), merges.end(), [](auto* a, auto* b) { return a->to < b->to; });
-  for (const EdgeRecord* e : merges)
-  {
-    try
-    {
-      graph.merge(e->to, e->from, e->z);
-    }
-    catch (const std::invalid_argument& ex)
-    {
-      throw std::runtime_error(lineTag(source, e->line) + ex.what());
-    }
-  }
+  applyMerges(graph, edges, source);
   if (have_fix)
   {
     if (!graph.hasNode(fix_id))

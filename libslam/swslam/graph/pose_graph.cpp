@@ -169,14 +169,16 @@ void PoseGraph::merge(TNodeID id, TNodeID anchor, const mrpt::poses::CPosePDFGau
     removeEdge(k);
   }
   merged_.emplace(id, Attachment{anchor, z});
-  anchored_[anchor]++;
+  anchored_[anchor].push_back(id);
   net_.nodes[id] = pose(anchor) + z.mean;
   for (auto it = carried.rbegin(); it != carried.rend(); ++it) addEdge(it->from, it->to, it->z, it->kind);
 }
 
-void PoseGraph::placeMerged()
+void PoseGraph::placeMergedInto(TNodeID anchor)
 {
-  for (const auto& [id, a] : merged_) net_.nodes[id] = pose(a.anchor) + a.z.mean;
+  const auto it = anchored_.find(anchor);
+  if (it == anchored_.end()) return;
+  for (const TNodeID id : it->second) net_.nodes[id] = pose(anchor) + merged_.at(id).z.mean;
 }
 
 const mrpt::poses::CPose2D& PoseGraph::pose(TNodeID id) const

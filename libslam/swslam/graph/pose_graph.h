@@ -68,8 +68,9 @@ class PoseGraph
   const std::map<TNodeID, Attachment>& merged() const { return merged_; }
   /** Nodes not merged into another. */
   size_t liveNodeCount() const { return nodeCount() - merged_.size(); }
-  /** Places every merged node at its anchor's pose composed with its attachment. */
-  void placeMerged();
+  /** Places the nodes merged into `anchor` at its pose composed with their attachments (after
+   * it moved). */
+  void placeMergedInto(TNodeID anchor);
 
   bool hasNode(TNodeID id) const { return adjacency_.count(id) != 0; }
   const mrpt::poses::CPose2D& pose(TNodeID id) const;
@@ -103,7 +104,7 @@ class PoseGraph
   std::vector<Edge> edges_;
   std::unordered_map<TNodeID, std::vector<size_t>> adjacency_;
   std::map<TNodeID, Attachment> merged_;
-  std::unordered_map<TNodeID, size_t> anchored_;  ///< how many merged nodes each anchor holds
+  std::unordered_map<TNodeID, std::vector<TNodeID>> anchored_;  ///< the nodes merged into each anchor
 };
 
 /** Throws std::invalid_argument(`what` + reason) unless `info` is finite, symmetric and

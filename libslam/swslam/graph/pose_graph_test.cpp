@@ -143,7 +143,7 @@ TEST(PoseGraph, AMergedNodesEdgesAndLaterOnesAreCarriedToItsAnchor)
   expectConsistent(g);
   // Moving the anchor moves the merged node; a copy keeps the merge.
   g.setPose(1, mrpt::poses::CPose2D(1, 1, 0));
-  g.placeMerged();
+  g.placeMergedInto(1);
   EXPECT_DOUBLE_EQ(g.pose(4).y(), 1.0);
   const swslam::graph::PoseGraph copy = g;
   EXPECT_TRUE(copy.isMerged(4));

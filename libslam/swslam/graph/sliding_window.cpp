@@ -127,8 +127,8 @@ void writeBack(const GraphSubproblem& sub, PoseGraph& graph)
     if (sub.problem.fixed[n]) continue;
     const geometry::Pose2& p = sub.problem.poses[n];
     graph.setPose(sub.node_ids[n], mrpt::poses::CPose2D(p.x(), p.y(), p.z()));
+    graph.placeMergedInto(sub.node_ids[n]);
   }
-  graph.placeMerged();
 }
 
 namespace

@@ -34,7 +34,7 @@ GraphSubproblem windowSubproblem(const PoseGraph& graph, size_t window_size,
  * if empty. */
 GraphSubproblem fullSubproblem(const PoseGraph& graph, const GraphOptimizerParams& params);
 
-/** Copies the free poses of `sub` back into `graph` and places the merged nodes. */
+/** Copies the free poses of `sub` back into `graph`, with the nodes merged into them. */
 void writeBack(const GraphSubproblem& sub, PoseGraph& graph);
 
 /** Optimizes the sliding window of params.window_size newest nodes; the graph is updated
