@@ -12,6 +12,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -124,10 +125,62 @@ std::string lineTag(const std::string& source, size_t line)
   return source + ":" + std::to_string(line) + ": ";
 }
 
-/** The "kind=merged" records, after the other edges, in id order (an anchor is older than the
- * nodes merged into it). */
-void applyMerges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const std::string& source)
+EdgeKind edgeKindOf(const std::string& comment, PoseGraph::TNodeID from, PoseGraph::TNodeID to)
 {
+  const auto at = comment.find("kind=");
+  if (at != std::string::npos)
+  {
+    std::istringstream s(comment.substr(at + 5));
+    std::string name;
+    s >> name;
+    if (const auto kind = edgeKindFromName(name)) return *kind;
+  }
+  return to == from + 1 ? EdgeKind::Consecutive : EdgeKind::Loop;
+}
+
+/** An EDGE_SE2 (g2o) or EDGE2 / EDGE (TORO) line's record, read after its keyword; none if
+ * it is malformed. */
+std::optional<EdgeRecord> edgeRecord(std::istringstream& s, bool g2o, size_t line, const std::string& comment)
+{
+  long long id1 = -1, id2 = -1;
+  double v[9];
+  if (!(s >> id1 >> id2) || id1 < 0 || id2 < 0 || !readNumbers(s, v, 9)) return std::nullopt;
+  mrpt::math::CMatrixDouble33 I;
+  if (g2o)  // I11 I12 I13 I22 I23 I33
+    I.asEigen() << v[3], v[4], v[5], v[4], v[6], v[7], v[5], v[7], v[8];
+  else  // TORO: I11 I12 I22 I33 I13 I23
+    I.asEigen() << v[3], v[4], v[7], v[4], v[5], v[8], v[7], v[8], v[6];
+  return EdgeRecord{line,
+                    PoseGraph::TNodeID(id1),
+                    PoseGraph::TNodeID(id2),
+                    mrpt::poses::CPosePDFGaussianInf(mrpt::poses::CPose2D(v[0], v[1], v[2]), I),
+                    edgeKindOf(comment, id1, id2),
+                    comment.find("switched_off") != std::string::npos,
+                    comment.find("kind=merged") != std::string::npos};
+}
+
+/** The file's edges into `graph`: the vertices only edges name placed first, the "kind=merged"
+ * records last, in id order (an anchor is older than the nodes merged into it). */
+void addEdges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const std::string& source, GraphLoadReport& rep)
+{
+  for (const auto& e : edges)
+    if (!std::isfinite(e.z.mean.x()) || !std::isfinite(e.z.mean.y()) || !std::isfinite(e.z.mean.phi()))
+      throw std::runtime_error(lineTag(source, e.line) + "edge " + std::to_string(e.from) + " -> " +
+                               std::to_string(e.to) + ": measurement is not finite");
+  rep.placed_vertices = placeMissingVertices(graph, edges, rep.placed_pieces);
+  for (const auto& e : edges)
+  {
+    if (e.merged) continue;
+    try
+    {
+      const auto added = graph.addEdge(e.from, e.to, e.z, e.kind);
+      if (e.switched_off && added) rep.switched_off.push_back(*added);
+    }
+    catch (const std::invalid_argument& ex)
+    {
+      throw std::runtime_error(lineTag(source, e.line) + ex.what());
+    }
+  }
   std::vector<const EdgeRecord*> merges;
   for (const auto& e : edges)
     if (e.merged) merges.push_back(&e);
@@ -143,19 +196,6 @@ void applyMerges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const s
       throw std::runtime_error(lineTag(source, e->line) + ex.what());
     }
   }
-}
-
-EdgeKind edgeKindOf(const std::string& comment, PoseGraph::TNodeID from, PoseGraph::TNodeID to)
-{
-  const auto at = comment.find("kind=");
-  if (at != std::string::npos)
-  {
-    std::istringstream s(comment.substr(at + 5));
-    std::string name;
-    s >> name;
-    if (const auto kind = edgeKindFromName(name)) return *kind;
-  }
-  return to == from + 1 ? EdgeKind::Consecutive : EdgeKind::Loop;
 }
 }  // namespace
 
@@ -184,8 +224,8 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
     const bool toro_vertex = key == "VERTEX2" || key == "VERTEX";
     const bool g2o_edge = key == "EDGE_SE2";
     const bool toro_edge = key == "EDGE2" || key == "EDGE";
-    long long id1 = -1, id2 = -1;
-    double v[9];
+    long long id1 = -1;
+    double v[3];
     if (g2o_vertex || toro_vertex)
     {
       if (!(s >> id1) || id1 < 0 || !readNumbers(s, v, 3))
@@ -204,20 +244,8 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
     }
     else if (g2o_edge || toro_edge)
     {
-      if (!(s >> id1 >> id2) || id1 < 0 || id2 < 0 || !readNumbers(s, v, 9))
-      {
-        skip(line, "malformed " + key + " line");
-        continue;
-      }
-      mrpt::math::CMatrixDouble33 I;
-      if (g2o_edge)  // I11 I12 I13 I22 I23 I33
-        I.asEigen() << v[3], v[4], v[5], v[4], v[6], v[7], v[5], v[7], v[8];
-      else  // TORO: I11 I12 I22 I33 I13 I23
-        I.asEigen() << v[3], v[4], v[7], v[4], v[5], v[8], v[7], v[8], v[6];
-      mrpt::poses::CPosePDFGaussianInf z(mrpt::poses::CPose2D(v[0], v[1], v[2]), I);
-      edges.push_back({line, PoseGraph::TNodeID(id1), PoseGraph::TNodeID(id2), z, edgeKindOf(comment, id1, id2),
-                       comment.find("switched_off") != std::string::npos,
-                       comment.find("kind=merged") != std::string::npos});
+      if (auto e = edgeRecord(s, g2o_edge, line, comment)) edges.push_back(*e);
+      else skip(line, "malformed " + key + " line");
     }
     else if (key == "FIX")
     {
@@ -231,25 +259,7 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
       skip(line, "unknown keyword '" + key + "'");
   }
   if (graph.nodeCount() == 0 && edges.empty()) throw std::runtime_error(source + ": no vertex and no edge in the file");
-  for (const auto& e : edges)
-    if (!std::isfinite(e.z.mean.x()) || !std::isfinite(e.z.mean.y()) || !std::isfinite(e.z.mean.phi()))
-      throw std::runtime_error(lineTag(source, e.line) + "edge " + std::to_string(e.from) + " -> " +
-                               std::to_string(e.to) + ": measurement is not finite");
-  rep.placed_vertices = placeMissingVertices(graph, edges, rep.placed_pieces);
-  for (const auto& e : edges)
-  {
-    if (e.merged) continue;
-    try
-    {
-      const auto added = graph.addEdge(e.from, e.to, e.z, e.kind);
-      if (e.switched_off && added) rep.switched_off.push_back(*added);
-    }
-    catch (const std::invalid_argument& ex)
-    {
-      throw std::runtime_error(lineTag(source, e.line) + ex.what());
-    }
-  }
-  applyMerges(graph, edges, source);
+  addEdges(graph, edges, source, rep);
   if (have_fix)
   {
     if (!graph.hasNode(fix_id))
@@ -270,6 +280,19 @@ PoseGraph loadGraph(const std::string& path, GraphLoadReport* report)
   return readGraph(in, path, report);
 }
 
+namespace
+{
+/** An EDGE_SE2 line: ids, mean, the information's upper triangle (g2o order), the comment. */
+void writeEdge(std::ostream& out, PoseGraph::TNodeID from, PoseGraph::TNodeID to,
+               const mrpt::poses::CPosePDFGaussianInf& z, const std::string& comment)
+{
+  const auto& m = z.mean;
+  const auto& I = z.cov_inv;
+  out << "EDGE_SE2 " << from << ' ' << to << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi() << ' ' << I(0, 0) << ' '
+      << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2) << ' ' << I(2, 2) << " # " << comment << '\n';
+}
+}  // namespace
+
 void writeGraph(const PoseGraph& graph, std::ostream& out, const std::vector<size_t>& switched_off)
 {
   std::vector<char> off(graph.edgeCount(), 0);
@@ -285,20 +308,9 @@ void writeGraph(const PoseGraph& graph, std::ostream& out, const std::vector<siz
   for (size_t k = 0; k < graph.edgeCount(); ++k)
   {
     const auto& e = graph.edge(k);
-    const auto& m = e.measurement->mean;
-    const auto& I = e.measurement->cov_inv;
-    out << "EDGE_SE2 " << e.from << ' ' << e.to << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi()
-        << ' ' << I(0, 0) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2)
-        << ' ' << I(2, 2) << " # kind=" << edgeKindName(e.kind) << (off[k] ? " switched_off" : "") << '\n';
+    writeEdge(out, e.from, e.to, *e.measurement, std::string("kind=") + edgeKindName(e.kind) + (off[k] ? " switched_off" : ""));
   }
-  for (const auto& [id, a] : graph.merged())
-  {
-    const auto& m = a.z.mean;
-    const auto& I = a.z.cov_inv;
-    out << "EDGE_SE2 " << a.anchor << ' ' << id << ' ' << m.x() << ' ' << m.y() << ' ' << m.phi() << ' ' << I(0, 0)
-        << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 1) << ' ' << I(1, 2) << ' ' << I(2, 2)
-        << " # kind=merged\n";
-  }
+  for (const auto& [id, a] : graph.merged()) writeEdge(out, a.anchor, id, a.z, "kind=merged");
 }
 
 void saveGraph(const PoseGraph& graph, const std::string& path, const std::vector<size_t>& switched_off)

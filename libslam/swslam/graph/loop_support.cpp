@@ -1,5 +1,7 @@
 #include <swslam/graph/loop_support.h>
 
+#include <swslam/graph/node_merge.h>
+
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 
@@ -14,16 +16,10 @@ namespace
 {
 using mrpt::poses::CPosePDFGaussian;
 
-/** An edge's measurement as a Gaussian on (x, y, theta) in the frame of its first pose. The
- * information weighs the error in the measurement's own frame (se2_error.h), so the
- * covariance of the translation is turned by the measurement's heading. */
+/** An edge's measurement as a Gaussian on (x, y, theta) in the frame of its first pose. */
 CPosePDFGaussian measured(const GraphProblem::Edge& e)
 {
-  Eigen::Matrix3d G = Eigen::Matrix3d::Identity();
-  const double c = std::cos(e.z.z()), s = std::sin(e.z.z());
-  G.topLeftCorner<2, 2>() << c, -s, s, c;
-  const Eigen::Matrix3d cov = G * e.information.inverse() * G.transpose();
-  return CPosePDFGaussian(mrpt::poses::CPose2D(e.z.x(), e.z.y(), e.z.z()), mrpt::math::CMatrixDouble33(cov));
+  return measurementGaussian(mrpt::poses::CPose2D(e.z.x(), e.z.y(), e.z.z()), e.information);
 }
 
 CPosePDFGaussian inverted(const CPosePDFGaussian& p)

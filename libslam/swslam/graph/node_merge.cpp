@@ -2,8 +2,6 @@
 
 #include <swslam/geometry/se2_error.h>
 
-#include <mrpt/poses/CPosePDFGaussian.h>
-
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -24,13 +22,9 @@ Eigen::Matrix3d turn(double theta)
   return G;
 }
 
-/** The measurement as MRPT's Gaussian: covariance in the frame of the edge's first pose. */
-CPosePDFGaussian asGaussian(const CPosePDFGaussianInf& z)
-{
-  const Eigen::Matrix3d G = turn(z.mean.phi());
-  return CPosePDFGaussian(z.mean, mrpt::math::CMatrixDouble33(G * z.cov_inv.asEigen().inverse() * G.transpose()));
-}
+CPosePDFGaussian asGaussian(const CPosePDFGaussianInf& z) { return measurementGaussian(z.mean, z.cov_inv.asEigen()); }
 
+/** The inverse of measurementGaussian. */
 CPosePDFGaussianInf asMeasurement(const CPosePDFGaussian& p)
 {
   const Eigen::Matrix3d G = turn(p.mean.phi());
@@ -39,6 +33,12 @@ CPosePDFGaussianInf asMeasurement(const CPosePDFGaussian& p)
   return CPosePDFGaussianInf(p.mean, mrpt::math::CMatrixDouble33(info));
 }
 }  // namespace
+
+CPosePDFGaussian measurementGaussian(const mrpt::poses::CPose2D& mean, const Eigen::Matrix3d& information)
+{
+  const Eigen::Matrix3d G = turn(mean.phi());
+  return CPosePDFGaussian(mean, mrpt::math::CMatrixDouble33(G * information.inverse() * G.transpose()));
+}
 
 CPosePDFGaussianInf carryEdge(const CPosePDFGaussianInf* from_attachment, const CPosePDFGaussianInf& z,
                               const CPosePDFGaussianInf* to_attachment)

@@ -6,12 +6,20 @@
 // the mean is the pose of `to` seen from `from`, the information weighs the error of
 // se2_error.h (in the measurement's own frame).
 
+#include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
+
+#include <Eigen/Core>
 
 #include <optional>
 
 namespace swslam::graph
 {
+/** A measurement (`mean`, `information` as above) as MRPT's Gaussian, whose covariance is in
+ * the frame of the edge's first pose: the translation's turned by the measurement's heading.
+ * What MRPT's composition and inversion take. */
+mrpt::poses::CPosePDFGaussian measurementGaussian(const mrpt::poses::CPose2D& mean, const Eigen::Matrix3d& information);
+
 /** The edge i -> j with measurement `z`, where i is held at `from_attachment` (its pose seen
  * from its anchor a) and j at `to_attachment` (seen from its anchor b), either one null when
  * that end is not merged: the edge a -> b (or a -> j, i -> b), mean

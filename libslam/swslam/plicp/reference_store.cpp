@@ -81,6 +81,15 @@ void ReferenceStore::keep(size_t id, std::shared_ptr<const ReferenceScan> built)
   }
 }
 
+void ReferenceStore::addReleased(size_t id)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (id != compact_.size())
+    throw std::invalid_argument("ReferenceStore: node " + std::to_string(id) + " added after " +
+                                std::to_string(compact_.size()) + " nodes (ids come in order)");
+  compact_.push_back(nullptr);
+}
+
 void ReferenceStore::release(size_t id)
 {
   std::lock_guard<std::mutex> lock(mutex_);

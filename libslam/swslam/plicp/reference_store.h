@@ -40,6 +40,9 @@ class ReferenceStore
   /** Forgets node `id`'s scan (a node merged into another is not matched again); its id
    * stays taken. Throws std::out_of_range for an id not added. */
   void release(size_t id);
+  /** Takes the next id with no scan, as if added and released (a restored node merged into
+   * another). Throws std::invalid_argument for another id than the next. */
+  void addReleased(size_t id);
 
   size_t size() const;
   /** Reference forms held now. */

@@ -86,6 +86,25 @@ TEST(ReferenceStore, RefusesNodesOutOfOrderAndUnknownIds)
   EXPECT_THROW(ReferenceStore(params, 0), std::invalid_argument);
 }
 
+TEST(ReferenceStore, AReleasedNodeKeepsItsIdButNotItsScan)
+{
+  const plicp::PlicpParams params;
+  ReferenceStore store(params, 3);
+  addRoomScans(store, params, 3);
+  const size_t before = store.bytes();
+  store.release(2);  // kept built: dropped too
+  EXPECT_THROW(store.get(2), std::out_of_range);
+  EXPECT_EQ(store.builtCount(), 2u);
+  EXPECT_LT(store.bytes(), before);
+  store.addReleased(3);  // a restored merged node: an id, no scan
+  EXPECT_THROW(store.get(3), std::out_of_range);
+  EXPECT_THROW(store.addReleased(5), std::invalid_argument);
+  store.add(4, roomScan(4, params));
+  EXPECT_EQ(store.size(), 5u);
+  EXPECT_NO_THROW(store.get(0));
+  EXPECT_THROW(store.release(9), std::out_of_range);
+}
+
 TEST(ReferenceStore, TwoThreadsGetTheSameScans)
 {
   const plicp::PlicpParams params;

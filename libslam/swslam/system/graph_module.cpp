@@ -60,8 +60,8 @@ void GraphModule::restore(graph::PoseGraph graph, const std::vector<std::shared_
     if (!graph.hasNode(id))
       throw std::invalid_argument("graph: a restored session's nodes must be 0.." + std::to_string(n - 1) + "; " +
                                   std::to_string(id) + " is missing");
-    scans_.add(id, scans[id]);
-    if (graph.isMerged(id)) scans_.release(id);
+    if (graph.isMerged(id)) scans_.addReleased(id);
+    else scans_.add(id, scans[id]);
     loop::LoopNode ln;
     ln.id = id;
     ln.path_length = id == 0 ? 0.0 : nodes_.back().path_length + step[id];

@@ -57,7 +57,7 @@ class GraphModule
   GraphStep addNode(const NewNode& node);
 
   /** Continues a saved session (before the first node): `graph` with nodes 0..n-1 and
-   * `scans[id]` each node's scan. A node's path length is summed over the consecutive edges
+   * `scans[id]` each node's scan (null for a node merged into another: not matched again). A node's path length is summed over the consecutive edges
    * (k-1 -> k) as addNode sums it. Throws std::logic_error after a node, std::invalid_argument
    * for a graph whose nodes are not 0..n-1 or a scan count that differs. */
   void restore(graph::PoseGraph graph, const std::vector<std::shared_ptr<const plicp::ReferenceScan>>& scans);

@@ -67,8 +67,10 @@ void SlamSystem::resume(const ResumedSession& session)
       throw std::invalid_argument("slam: resumed node " + std::to_string(id) + "'s observation: " + e.what());
     }
     poses.push_back(session.graph.pose(id));
-    scans.push_back(std::make_shared<const plicp::ReferenceScan>(
-        sensor::scanFromCheckedObservation(*obs, params_.tracking.min_range), params_.plicp));
+    scans.push_back(session.graph.isMerged(id)
+                        ? nullptr  // never matched by the graph module again
+                        : std::make_shared<const plicp::ReferenceScan>(
+                              sensor::scanFromCheckedObservation(*obs, params_.tracking.min_range), params_.plicp));
     times.push_back(mrpt::Clock::toDouble(obs->timestamp));
   }
   graph_.restore(session.graph, scans);
