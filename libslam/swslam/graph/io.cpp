@@ -159,8 +159,8 @@ std::optional<EdgeRecord> edgeRecord(std::istringstream& s, bool g2o, size_t lin
                     comment.find("kind=merged") != std::string::npos};
 }
 
-/** The file's edges into `graph`: the vertices only edges name placed first, the "kind=merged"
- * records last, in id order (an anchor is older than the nodes merged into it). */
+/** The file's edges into `graph` but the "kind=merged" records: the vertices only edges name
+ * placed first. */
 void addEdges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const std::string& source, GraphLoadReport& rep)
 {
   for (const auto& e : edges)
@@ -181,6 +181,12 @@ void addEdges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const std:
       throw std::runtime_error(lineTag(source, e.line) + ex.what());
     }
   }
+}
+
+/** The "kind=merged" records, in id order (an anchor is older than the nodes merged into it),
+ * once the root is known (it stays a node). */
+void applyMerges(PoseGraph& graph, const std::vector<EdgeRecord>& edges, const std::string& source)
+{
   std::vector<const EdgeRecord*> merges;
   for (const auto& e : edges)
     if (e.merged) merges.push_back(&e);
@@ -267,6 +273,7 @@ PoseGraph readGraph(std::istream& in, const std::string& source, GraphLoadReport
                                std::to_string(fix_id));
     graph.setRoot(fix_id);
   }
+  applyMerges(graph, edges, source);
   rep.vertices = graph.nodeCount();
   rep.edges = graph.edgeCount();
   if (report) *report = rep;

@@ -206,6 +206,7 @@ const std::vector<size_t>& PoseGraph::edgesOf(TNodeID id) const
 void PoseGraph::setRoot(TNodeID id)
 {
   if (!hasNode(id)) throw std::invalid_argument("root: missing " + nodeName(id));
+  if (isMerged(id)) throw std::invalid_argument("root: " + nodeName(id) + " is merged into another");
   net_.root = id;
 }
 
