@@ -126,15 +126,26 @@ bool NormalEquations::factorSolve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
 
 void NormalEquations::addStoredBlock(int row_block, int col_block, const Eigen::Matrix3d& block)
 {
-  // Within a column the rows of a block are contiguous in the compressed storage; a diagonal
-  // block keeps its upper half.
+  // The three columns of a block column hold the same rows above the diagonal block, so a
+  // block's rows sit at the same offset from each column's start: one search finds all
+  // three. A diagonal block keeps its upper half, the last entries of each column.
   double* values = H_.valuePtr();
+  const int* outer = H_.outerIndexPtr();
+  const int first_col = 3 * col_block;
+  if (row_block == col_block)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      int s = outer[first_col + c + 1] - (c + 1);
+      for (int r = 0; r <= c; ++r) values[s++] += block(r, c);
+    }
+    return;
+  }
+  const int offset = slot(3 * row_block, first_col) - outer[first_col];
   for (int c = 0; c < 3; ++c)
   {
-    const int col = 3 * col_block + c;
-    const int last_row = row_block == col_block ? c : 2;
-    int s = slot(3 * row_block, col);
-    for (int r = 0; r <= last_row; ++r) values[s++] += block(r, c);
+    int s = outer[first_col + c] + offset;
+    for (int r = 0; r < 3; ++r) values[s++] += block(r, c);
   }
 }
 

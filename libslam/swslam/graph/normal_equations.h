@@ -68,7 +68,7 @@ class NormalEquations
   /** CHOLMOD is used for systems of at least this many unknowns whose factor holds more
    * than kCholmodMinFillPerColumn non-zeros per column (decided by the symbolic analysis). */
   static constexpr int kCholmodMinDimension = 300;
-  static constexpr double kCholmodMinFillPerColumn = 40.0;
+  static constexpr double kCholmodMinFillPerColumn = 120.0;
 
  private:
   /** With `dense_solver` false, the simplicial factorization whatever the fill (for

@@ -79,9 +79,9 @@ TEST(NormalEquations, ChainMatchesDenseSolveWithTheSimplicialFactorization)
 TEST(NormalEquations, DenselyCoupledSystemSwitchesToCholmod)
 {
   std::vector<std::pair<int, int>> pairs;
-  for (int a = 0; a < 120; ++a)
+  for (int a = 0; a < 160; ++a)
     for (int b = 0; b < a; b += 2) pairs.emplace_back(a, b);
-  checkAgainstDense(120, pairs, true);
+  checkAgainstDense(160, pairs, true);
 }
 
 TEST(NormalEquations, BlocksOffThePatternAreSolvedExactlyOnBothFactorizations)
@@ -99,11 +99,11 @@ TEST(NormalEquations, BlocksOffThePatternAreSolvedExactlyOnBothFactorizations)
   }
   checkAgainstDense(200, chain, false, nullptr, off);
   std::vector<std::pair<int, int>> dense;
-  for (int a = 0; a < 120; ++a)
+  for (int a = 0; a < 160; ++a)
     for (int b = 0; b < a; b += 2) dense.emplace_back(a, b);
   std::vector<std::pair<int, int>> odd;  // pairs the dense pattern lacks
-  for (int a = 1; a < 120; a += 2) odd.emplace_back(a, a - 1);
-  checkAgainstDense(120, dense, true, nullptr, odd);
+  for (int a = 1; a < 160; a += 2) odd.emplace_back(a, a - 1);
+  checkAgainstDense(160, dense, true, nullptr, odd);
 }
 
 TEST(NormalEquations, SetZeroClearsEverything)
@@ -142,13 +142,13 @@ TEST(NormalEquations, FillProbeEqualsTheAnalysisOfTheSameSystem)
 {
   std::vector<std::pair<int, int>> chain, dense;
   for (int a = 1; a < 200; ++a) chain.emplace_back(a - 1, a);
-  for (int a = 0; a < 120; ++a)
+  for (int a = 0; a < 160; ++a)
     for (int b = 0; b < a; b += 2) dense.emplace_back(a, b);
-  const swslam::graph::NormalEquations sparse_ne(200, chain), dense_ne(120, dense);
+  const swslam::graph::NormalEquations sparse_ne(200, chain), dense_ne(160, dense);
   EXPECT_FALSE(sparse_ne.usesCholmod());
   EXPECT_TRUE(dense_ne.usesCholmod());
   EXPECT_EQ(swslam::graph::NormalEquations::fillPerColumnOf(200, chain), sparse_ne.fillPerColumn());
-  EXPECT_EQ(swslam::graph::NormalEquations::fillPerColumnOf(120, dense), dense_ne.fillPerColumn());
+  EXPECT_EQ(swslam::graph::NormalEquations::fillPerColumnOf(160, dense), dense_ne.fillPerColumn());
   EXPECT_GT(dense_ne.fillPerColumn(), 10 * sparse_ne.fillPerColumn());
   // An edge to a fixed pose (-1) couples nothing.
   chain.emplace_back(-1, 5);
