@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <mrpt/system/CTicTac.h>
 
 #include <algorithm>
 #include <cmath>
@@ -335,6 +336,9 @@ OptimizationReport optimizeFromBestStart(GraphProblem& problem, const GraphOptim
   // Tls proposes LAGO's poses itself, among others.
   if (params.kernel_schedule == KernelSchedule::Tls) return optimizeGraphProblem(problem, params);
   const KindKernels kernels = uniformKernels(params.kernel());
+  GraphProblem guess = problem;
+  OptimizationReport from_guess = optimizeGraphProblem(guess, params);
+  mrpt::system::CTicTac lago_timer;
   GraphProblem lago = problem;
   try
   {
@@ -342,11 +346,17 @@ OptimizationReport optimizeFromBestStart(GraphProblem& problem, const GraphOptim
   }
   catch (const std::runtime_error&)
   {
-    return optimizeGraphProblem(problem, params);  // no LAGO start (a singular system): the guess alone
+    lago.poses.clear();  // a singular system: no LAGO start
   }
-  if (!(robustCost(lago, kernels) < robustCost(problem, kernels))) return optimizeGraphProblem(problem, params);
-  GraphProblem guess = problem;
-  OptimizationReport from_guess = optimizeGraphProblem(guess, params);
+  from_guess.time_s += lago_timer.Tac();
+  // Where the guess's run ended below LAGO's start, LAGO's run is not tried: a guess that was
+  // good (a graph optimized before, as the system's) ends at the optimum LAGO's would reach.
+  if (lago.poses.empty() || (from_guess.status != OptimizationStatus::Diverged &&
+                             !(robustCost(lago, kernels) < robustCost(guess, kernels))))
+  {
+    problem.poses = guess.poses;
+    return from_guess;
+  }
   OptimizationReport from_lago = optimizeGraphProblem(lago, params);
   const bool lago_wins = from_lago.status != OptimizationStatus::Diverged &&
                          (from_guess.status == OptimizationStatus::Diverged || from_lago.final_cost < from_guess.final_cost);

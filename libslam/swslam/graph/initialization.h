@@ -58,9 +58,10 @@ struct RobustLago
 RobustLago robustLagoPoses(const GraphProblem& problem, const std::vector<char>& use, const OutlierGates& gates);
 
 /** Optimizes a whole problem (optimizeGraphProblem) from its own poses and, when LAGO's poses
- * start at a lower cost under params' kernel (the guess is poor: an odometry chain whose
- * heading drifted), from those too; the result of the lower final cost stays, and
- * report.lago_start says whether it is LAGO's. The time and iterations are both runs'. */
+ * start at a lower cost under params' kernel than that run ended at (the guess was poor: an
+ * odometry chain whose heading drifted, and it ended in a local minimum), from those too; the
+ * result of the lower final cost stays, and report.lago_start says whether it is LAGO's. The
+ * time and iterations are both runs' (LAGO's solve included). */
 OptimizationReport optimizeFromBestStart(GraphProblem& problem, const GraphOptimizerParams& params);
 
 }  // namespace swslam::graph

@@ -195,9 +195,10 @@ TEST(LagoInitialization, TheStartDoesNotDependOnTheGuessAndLeadsToTheOptimum)
   EXPECT_TRUE(best.lago_start);
   EXPECT_NEAR(best.final_chi2, optimum, 1e-6 * optimum);
   // ...and keeps a good guess without a second run.
-  GraphProblem good = from_truth;
+  GraphProblem good = from_truth, alone = from_truth;
   const OptimizationReport kept = optimizeFromBestStart(good, l2);
   EXPECT_FALSE(kept.lago_start);
+  EXPECT_EQ(kept.iterations, optimizeGraphProblem(alone, l2).iterations) << "LAGO's start was not run";
   EXPECT_NEAR(kept.final_chi2, optimum, 1e-6 * optimum);
 }
 
