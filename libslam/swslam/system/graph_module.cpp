@@ -1,10 +1,13 @@
 #include <swslam/system/graph_module.h>
 
+#include <swslam/graph/initialization.h>
 #include <swslam/graph/sliding_window.h>
 #include <swslam/loop/final_refinement.h>
 
 #include <mrpt/system/CTimeLogger.h>
 
+#include <algorithm>
+#include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -200,34 +203,72 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Co
 
 namespace
 {
-/** The whole graph with the fixed kernel; if that switched edges off, a second start from the
- * same poses with graduated non-convexity, and the result of lower cost under the fixed kernel
+/** Whether graph edge `k` measures a step of the chain again: a consecutive or dense-neighbour
+ * edge joins the same two nodes. */
+bool repeatsAChainStep(const graph::PoseGraph& graph, size_t k)
+{
+  const graph::PoseGraph::Edge& e = graph.edge(k);
+  for (const size_t other : graph.edgesOf(e.from))
+  {
+    const graph::PoseGraph::Edge& o = graph.edge(other);
+    const bool chain = o.kind == graph::EdgeKind::Consecutive || o.kind == graph::EdgeKind::DenseNeighbour;
+    if (other != k && chain && (o.from == e.to || o.to == e.to)) return true;
+  }
+  return false;
+}
+
+/** The switched-off edges of a report on `sub` that may ask for a second look: by their nodes
+ * and kind (a fused edge keeps them), those that repeat a chain step left out. Such an edge
+ * is weighed against the other measurements of that step alike from any start. */
+std::set<EdgeSignature> signatures(const graph::PoseGraph& graph, const graph::GraphSubproblem& sub,
+                                   const std::vector<size_t>& switched_off)
+{
+  std::set<EdgeSignature> out;
+  for (const size_t k : switched_off)
+  {
+    const graph::PoseGraph::Edge& e = graph.edge(sub.edge_indices[k]);
+    if (!repeatsAChainStep(graph, sub.edge_indices[k])) out.emplace(e.from, e.to, static_cast<int>(e.kind));
+  }
+  return out;
+}
+
+/** The whole graph with the fixed kernel (from the graph's poses or LAGO's); then, if that
+ * switched off an edge it had not switched off at the last full optimization (`off`, updated),
+ * graduated non-convexity from its result, and the result of lower cost under the fixed kernel
  * (the cost both minimize). Started at the chain's guess, the fixed kernel gives no weight to
  * loops that disagree with the chain by far, right or wrong: a wrong consecutive edge keeps the
- * chain and the true loops are switched off. GNC weighs them from a convex start
+ * chain and the true loops are switched off. GNC weighs every edge again from a convex stage
  * (doc/graph-optimization.md). Its final least-squares solve costs a little more under the
- * kernel when both switch the same edges off, so then the fixed result stays. */
-graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params)
+ * kernel when both switch the same edges off, so then the fixed result stays. An edge the fixed
+ * kernel switches off again has had that second look, whichever result was kept. */
+graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params,
+                                            std::set<EdgeSignature>& off)
 {
   if (params.kernel_schedule != graph::KernelSchedule::Fixed)
     return graph::optimizeFull(graph, params);
-  // The starting poses, for the second start: the graph itself is copied only when it runs
-  // (an optimization changes nothing else of it).
-  std::vector<std::pair<graph::PoseGraph::TNodeID, mrpt::poses::CPose2D>> start;
-  for (const auto id : graph.nodeIds()) start.emplace_back(id, graph.pose(id));
-  graph::OptimizationReport report = graph::optimizeFull(graph, params);
-  if (report.switched_off.empty()) return report;
-  graph::PoseGraph second = graph;
-  for (const auto& [id, pose] : start) second.setPose(id, pose);
-  graph::GraphOptimizerParams gnc = params;
-  gnc.kernel_schedule = graph::KernelSchedule::Gnc;
-  const graph::OptimizationReport second_report = graph::optimizeFull(second, gnc);
-  const auto kernels = graph::uniformKernels(params.kernel());
-  const double cost = graph::robustCost(graph::fullSubproblem(graph, params).problem, kernels);
-  const double second_cost = graph::robustCost(graph::fullSubproblem(second, params).problem, kernels);
-  if (!(second_cost < cost)) return report;
-  graph = std::move(second);
-  return second_report;
+  graph::GraphSubproblem sub = graph::fullSubproblem(graph, params);
+  graph::OptimizationReport report = graph::optimizeFromBestStart(sub.problem, params);
+  std::set<EdgeSignature> fixed_off = signatures(graph, sub, report.switched_off);
+  const bool anew = std::any_of(fixed_off.begin(), fixed_off.end(), [&](const auto& e) { return off.count(e) == 0; });
+  off = std::move(fixed_off);
+  if (anew)
+  {
+    graph::GraphProblem second = sub.problem;
+    graph::GraphOptimizerParams gnc = params;
+    gnc.kernel_schedule = graph::KernelSchedule::Gnc;
+    graph::OptimizationReport second_report = graph::optimizeGraphProblem(second, gnc);
+    const auto kernels = graph::uniformKernels(params.kernel());
+    if (second_report.status != graph::OptimizationStatus::Diverged &&
+        (report.status == graph::OptimizationStatus::Diverged ||
+         graph::robustCost(second, kernels) < graph::robustCost(sub.problem, kernels)))
+    {
+      sub.problem.poses = std::move(second.poses);
+      report = std::move(second_report);
+    }
+  }
+  if (report.status != graph::OptimizationStatus::Diverged) graph::writeBack(sub, graph);
+  for (size_t& k : report.switched_off) k = sub.edge_indices[k];  // the graph's edge indices
+  return report;
 }
 }  // namespace
 
@@ -242,7 +283,7 @@ void GraphModule::optimize(bool full, GraphStep& step)
 {
   step.full = full;
   std::lock_guard<std::mutex> lock(mutex_);
-  step.report = full ? optimizeFullTwice(graph_, graph_params_) : graph::optimizeWindow(graph_, graph_params_);
+  step.report = full ? optimizeFullTwice(graph_, graph_params_, switched_off_) : graph::optimizeWindow(graph_, graph_params_);
   const std::vector<graph::PoseGraph::TNodeID> ids =
       full ? graph_.nodeIds() : graph_.newestNodes(graph_params_.window_size);
   step.reinsert.scan = step.scan;

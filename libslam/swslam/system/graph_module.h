@@ -23,10 +23,15 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
+#include <tuple>
 #include <vector>
 
 namespace swslam::system
 {
+/** Edges told apart by their nodes and kind (edges fused into one keep them). */
+using EdgeSignature = std::tuple<graph::PoseGraph::TNodeID, graph::PoseGraph::TNodeID, int>;
+
 /** What one graph step did, and what the other modules must learn from it. */
 struct GraphStep
 {
@@ -99,6 +104,8 @@ class GraphModule
   size_t loops_ = 0;   ///< guarded by mutex_
   FullOptimizationSchedule schedule_;  ///< only the owning thread
   loop::LoopCorroboration corroboration_;    ///< only the owning thread
+  /** The edges the last full optimization switched off; only the owning thread. */
+  std::set<EdgeSignature> switched_off_;
 };
 
 }  // namespace swslam::system

@@ -219,10 +219,10 @@ TEST(GraphModule, APlantedWrongConsecutiveEdgeIsSwitchedOffAndTheTrajectoryComes
 {
   // Every setting of config/default.ini, and its kernel schedule changed to the others: the
   // wrong edge is switched off, alone, and every node comes back within 0.05 m. With the fixed
-  // kernel (the default) that takes the whole-graph optimization's second start: from the
+  // kernel (the default) that takes the whole-graph optimization's second look: from the
   // chain's guess, where the loops are some 180 standard deviations off and the wrong edge
   // fits, the fixed kernel alone keeps the chain and switches the three loops off (the last
-  // node 7.9 m off; cost 204 against 57 for GNC's result).
+  // node 7.9 m off; cost 204 against 57 for GNC's result from there).
   const SystemParams params = loadSystemParams(std::string(SWSLAM_SOURCE_DIR) + "/config/default.ini");
   ASSERT_EQ(params.graph_optimizer.kernel_schedule, graph::KernelSchedule::Fixed);
   ASSERT_TRUE(params.graph_optimizer.isRobust(graph::EdgeKind::Consecutive));
