@@ -29,9 +29,10 @@ std::vector<StampedPose> readTum(const std::string& path)
     std::snprintf(buf, sizeof(buf), "quaternion (%g %g %g %g) has norm %g, not 1", r[4], r[5], r[6], r[7], norm);
     return buf;
   };
+  const auto rows = readNumberRows<8>(path, "tum", "t x y z qx qy qz qw", row_problem);
   std::vector<StampedPose> out;
-  for (const auto& [t, x, y, z, qx, qy, qz, qw] :
-       readNumberRows<8>(path, "tum", "t x y z qx qy qz qw", row_problem))
+  out.reserve(rows.size());
+  for (const auto& [t, x, y, z, qx, qy, qz, qw] : rows)
   {
     const double yaw = std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz));
     out.push_back({t, mrpt::poses::CPose2D(x, y, yaw)});

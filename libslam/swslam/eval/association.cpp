@@ -33,15 +33,31 @@ std::optional<size_t> closestInTime(const std::vector<common::StampedPose>& sort
   return best;
 }
 
+namespace
+{
+/** `poses` if they are in time order already (a run's trajectory, a TUM file), else a sorted
+ * copy kept in `sorted`: a long run's trajectory is not copied twice. */
+const std::vector<common::StampedPose>& inTimeOrder(const std::vector<common::StampedPose>& poses,
+                                                    std::vector<common::StampedPose>& sorted)
+{
+  const auto earlier = [](const common::StampedPose& a, const common::StampedPose& b) { return a.t < b.t; };
+  if (std::is_sorted(poses.begin(), poses.end(), earlier)) return poses;
+  sorted = sortedByTime(poses);
+  return sorted;
+}
+}  // namespace
+
 Association associate(const std::vector<common::StampedPose>& est_in,
                       const std::vector<common::StampedPose>& gt_in, double max_dt)
 {
   if (!(max_dt >= 0)) throw std::invalid_argument("associate: max_dt must be >= 0");
-  const auto est = sortedByTime(est_in);
-  const auto gt = sortedByTime(gt_in);
+  std::vector<common::StampedPose> est_sorted, gt_sorted;
+  const auto& est = inTimeOrder(est_in, est_sorted);
+  const auto& gt = inTimeOrder(gt_in, gt_sorted);
 
   // Candidates (|dt|, est index, gt index): a sliding window over the sorted ground truth.
   std::vector<std::tuple<double, size_t, size_t>> candidates;
+  candidates.reserve(est.size());
   size_t first = 0;
   for (size_t i = 0; i < est.size(); i++)
   {
@@ -53,6 +69,7 @@ Association associate(const std::vector<common::StampedPose>& est_in,
 
   std::vector<bool> est_used(est.size()), gt_used(gt.size());
   Association a;
+  a.pairs.reserve(std::min(est.size(), gt.size()));
   for (const auto& [dt, i, j] : candidates)
   {
     if (est_used[i] || gt_used[j]) continue;

@@ -33,7 +33,7 @@ void RunRecorder::tracked(size_t index, double timestamp, const tracking::Tracki
   row.prior_decided = step.prior_decided;
   std::lock_guard<std::mutex> lock(mutex_);
   stats_.push_back(row);
-  trajectory_.push_back({row.timestamp, step.keyframe, step.relative, step.pose});
+  trajectory_.push_back({row.timestamp, step.keyframe, step.relative.asTPose(), step.pose.asTPose()});
   if (step.new_keyframe) keyframe_times_.push_back(row.timestamp);
   status_.scans++;
   status_.nodes = nodes;
@@ -119,12 +119,15 @@ RunResults RunRecorder::results(graph::PoseGraph graph, size_t loops, size_t map
     if (row.graph_ms > 0) active = row.active_sq_residuals;
     row.active_sq_residuals = active;
   }
+  r.trajectory.reserve(trajectory_.size());
   for (const TrajectoryRecord& rec : trajectory_)
   {
     // A keyframe the graph has not received yet (threaded, mid-run): the tracked pose.
-    r.trajectory.push_back(
-        {rec.t, r.graph.hasNode(rec.keyframe) ? r.graph.pose(rec.keyframe) + rec.relative : rec.tracked});
+    r.trajectory.push_back({rec.t, r.graph.hasNode(rec.keyframe)
+                                       ? r.graph.pose(rec.keyframe) + mrpt::poses::CPose2D(rec.relative)
+                                       : mrpt::poses::CPose2D(rec.tracked)});
   }
+  r.keyframes.reserve(keyframe_times_.size());
   for (size_t id = 0; id < keyframe_times_.size(); ++id)
     if (r.graph.hasNode(id)) r.keyframes.push_back({keyframe_times_[id], r.graph.pose(id)});
   return r;

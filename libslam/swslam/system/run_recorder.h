@@ -9,6 +9,8 @@
 #include <swslam/system/scan_stats.h>
 #include <swslam/tracking/local_tracker.h>
 
+#include <mrpt/math/TPose2D.h>
+
 #include <mutex>
 #include <string>
 #include <vector>
@@ -63,12 +65,13 @@ class RunRecorder
   RunResults results(graph::PoseGraph graph, size_t loops, size_t map_bytes) const;
 
  private:
+  /** One a scan, for the whole run: plain poses (24 bytes, against CPose2D's 64). */
   struct TrajectoryRecord
   {
     double t;
     size_t keyframe;
-    mrpt::poses::CPose2D relative;
-    mrpt::poses::CPose2D tracked;  ///< the pose tracking gave it at the time
+    mrpt::math::TPose2D relative;
+    mrpt::math::TPose2D tracked;  ///< the pose tracking gave it at the time
   };
 
   mutable std::mutex mutex_;
