@@ -178,7 +178,8 @@ void PoseGraph::placeMergedInto(TNodeID anchor)
 {
   const auto it = anchored_.find(anchor);
   if (it == anchored_.end()) return;
-  for (const TNodeID id : it->second) net_.nodes[id] = pose(anchor) + merged_.at(id).z.mean;
+  const mrpt::poses::CPose2D& at = pose(anchor);
+  for (const TNodeID id : it->second) net_.nodes[id] = at + merged_.at(id).z.mean;
 }
 
 const mrpt::poses::CPose2D& PoseGraph::pose(TNodeID id) const

@@ -287,10 +287,12 @@ void GraphModule::optimize(bool full, GraphStep& step)
   const std::vector<graph::PoseGraph::TNodeID> ids =
       full ? graph_.nodeIds() : graph_.newestNodes(graph_params_.window_size);
   step.reinsert.scan = step.scan;
+  // The ids ascend: each new entry goes at the end of the maps (a hint, not a search).
   for (const auto id : ids)
   {
-    step.poses[id] = graph_.pose(id);
-    if (!graph_.isMerged(id)) step.reinsert.poses[id] = graph_.pose(id);  // a merged node is not mapped
+    const CPose2D& pose = graph_.pose(id);
+    step.poses.insert_or_assign(step.poses.end(), id, pose);
+    if (!graph_.isMerged(id)) step.reinsert.poses.insert_or_assign(step.reinsert.poses.end(), id, pose);  // a merged node is not mapped
   }
 }
 
