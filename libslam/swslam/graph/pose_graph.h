@@ -65,6 +65,8 @@ class PoseGraph
    * finite with a positive-definite information. */
   void merge(TNodeID id, TNodeID anchor, const mrpt::poses::CPosePDFGaussianInf& z);
   bool isMerged(TNodeID id) const { return merged_.count(id) != 0; }
+  /** Whether other nodes are merged into `id` (it cannot be merged itself then). */
+  bool isAnchor(TNodeID id) const { return anchored_.count(id) != 0; }
   const std::map<TNodeID, Attachment>& merged() const { return merged_; }
   /** Nodes not merged into another. */
   size_t liveNodeCount() const { return nodeCount() - merged_.size(); }

@@ -109,33 +109,42 @@ GraphStep GraphModule::addNode(const NewNode& node)
   std::vector<graph::Constraint> loops;
   const size_t correcting = closeLoops(id, step, loops);
   optimize(schedule_.fullNow(id, correcting), step);
-  if (const auto tie = redundantWith(id, loops))
-  {
-    // Held where the window's optimization put it (the loop with the rest of the graph: the
-    // loop alone would carry its own match error into every later edge), as certain as the loop.
-    mrpt::poses::CPosePDFGaussianInf z;
-    z.mean = graph_.pose(id) - graph_.pose(tie->from);
-    z.cov_inv = mrpt::math::CMatrixDouble33(tie->information);
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      graph_.merge(id, tie->from, z);
-      step.poses[id] = graph_.pose(id);
-    }
-    step.reinsert.poses.erase(id);  // never mapped
-    scans_.release(id);
-    step.merged_into = tie->from;
-    return step;
-  }
   step.insert = MapInsert{node.scan, id, node.observation,
                           step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
+  if (!loops.empty() && graph_params_.max_nodes_per_area > 0) loops_of_window_.emplace(id, std::move(loops));
+  if (id >= graph_params_.window_size) mergeIfRedundant(id - graph_params_.window_size, step);
   return step;
+}
+
+void GraphModule::mergeIfRedundant(size_t id, GraphStep& step)
+{
+  const auto it = loops_of_window_.find(id);
+  if (it == loops_of_window_.end()) return;
+  const std::vector<graph::Constraint> loops = std::move(it->second);
+  loops_of_window_.erase(it);
+  const auto tie = redundantWith(id, loops);
+  if (!tie) return;
+  // Held where the optimizations put it (the loop with the rest of the graph: the loop alone
+  // would carry its own match error into every later edge), as certain as the loop.
+  mrpt::poses::CPosePDFGaussianInf z;
+  z.mean = graph_.pose(id) - graph_.pose(tie->from);
+  z.cov_inv = mrpt::math::CMatrixDouble33(tie->information);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    graph_.merge(id, tie->from, z);
+    step.poses[id] = graph_.pose(id);
+  }
+  step.reinsert.poses.erase(id);
+  step.reinsert.removed.push_back(id);  // its scan leaves the map
+  scans_.release(id);
+  step.merged_into = tie->from;
 }
 
 std::optional<graph::Constraint> GraphModule::redundantWith(size_t id, const std::vector<graph::Constraint>& loops) const
 {
   const size_t bound = graph_params_.max_nodes_per_area;
   const double radius = graph_params_.node_area_radius;
-  if (bound == 0) return std::nullopt;
+  if (bound == 0 || graph_.isMerged(id) || graph_.isAnchor(id)) return std::nullopt;
   // The loop into `id` from the nearest earlier node that holds a scan and agrees with the graph.
   const CPose2D& here = graph_.pose(id);
   std::optional<graph::Constraint> tie;

@@ -20,6 +20,7 @@
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -41,7 +42,9 @@ struct GraphStep
   size_t pairs_refined = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
   bool full = false;          ///< the whole graph was optimized
-  std::optional<size_t> merged_into;  ///< the earlier node the new one was merged into (no map insert)
+  /** The earlier pass's node that the node leaving the window was merged into (its scan then
+   * leaves the map: reinsert.removed). */
+  std::optional<size_t> merged_into;
   graph::OptimizationReport report;
   PoseUpdate poses;                ///< optimized node poses (for tracking)
   std::optional<MapInsert> insert;  ///< for the map: the new node's scan, at its optimized pose...
@@ -85,10 +88,14 @@ class GraphModule
    * step.loops_accepted); returns how many of them disagree with the graph enough to ask
    * for a full optimization (loopCorrectsGraph). */
   size_t closeLoops(size_t id, GraphStep& step, std::vector<graph::Constraint>& accepted);
-  /** The loop that ties new node `id` to the earlier node it is to be merged into
-   * ([graph_optimizer] max_nodes_per_area); none to keep it. The node is then held at its
-   * optimized pose relative to that node, with the loop's information. */
+  /** Of the loops accepted at node `id`, the one that ties it to the earlier pass's node it is
+   * to be merged into ([graph_optimizer] max_nodes_per_area), agreeing with the graph now; none
+   * to keep it. The node is then held at its pose relative to that node, with the loop's
+   * information. */
   std::optional<graph::Constraint> redundantWith(size_t id, const std::vector<graph::Constraint>& loops) const;
+  /** Node `id`, leaving the sliding window, merged into an earlier pass's node if redundantWith
+   * its loops says so: held there, its scan released and removed from the map (step.reinsert). */
+  void mergeIfRedundant(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
   /** Node `n` for loop closure, with its scan (rebuilt by the store if not kept). */
   loop::LoopNode loopNode(size_t n) const;
@@ -106,6 +113,9 @@ class GraphModule
   loop::LoopCorroboration corroboration_;    ///< only the owning thread
   /** The edges the last full optimization switched off; only the owning thread. */
   std::set<EdgeSignature> switched_off_;
+  /** The loops accepted at each node still in the sliding window (max_nodes_per_area > 0): its
+   * merge is decided as it leaves the window. Only the owning thread. */
+  std::map<size_t, std::vector<graph::Constraint>> loops_of_window_;
 };
 
 }  // namespace swslam::system

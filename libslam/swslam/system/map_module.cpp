@@ -17,6 +17,7 @@ MapStep MapModule::handle(const MapMessage& message)
   {
     const auto& re = std::get<MapReinsert>(message);
     step.scan = re.scan;
+    for (const map::MapNodeId id : re.removed) builder_.remove(id);
     step.reinserted = builder_.reinsertMoved(re.poses, builder_.params().reinsertThreshold());
   }
   return step;
@@ -24,6 +25,8 @@ MapStep MapModule::handle(const MapMessage& message)
 
 void MapModule::merge(MapReinsert& into, MapReinsert&& later)
 {
+  into.removed.insert(into.removed.end(), later.removed.begin(), later.removed.end());
+  for (const map::MapNodeId id : later.removed) into.poses.erase(id);
   for (auto& [id, pose] : later.poses) into.poses[id] = pose;
   into.scan = later.scan;
 }

@@ -35,10 +35,12 @@ struct MapInsert
   mrpt::poses::CPose2D pose;
 };
 
-/** Graph -> map: node poses after an optimization (moved ones get re-inserted). */
+/** Graph -> map: nodes merged into others (their scans leave the map), then node poses after
+ * an optimization (moved ones get re-inserted). */
 struct MapReinsert
 {
   size_t scan = 0;
+  std::vector<map::MapNodeId> removed;
   std::map<map::MapNodeId, mrpt::poses::CPose2D> poses;
 };
 

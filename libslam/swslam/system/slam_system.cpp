@@ -158,7 +158,7 @@ void SlamSystem::applyGraphStep(const GraphStep& step, double seconds)
       map_queue_.push(std::move(m));
   };
   if (step.insert) toMap(*step.insert);
-  if (!step.reinsert.poses.empty()) toMap(step.reinsert);
+  if (!step.reinsert.poses.empty() || !step.reinsert.removed.empty()) toMap(step.reinsert);
 }
 
 void SlamSystem::graphOne(const NewNode& node)
