@@ -65,7 +65,7 @@ class RunRecorder
   RunResults results(graph::PoseGraph graph, size_t loops, size_t map_bytes) const;
 
  private:
-  /** One a scan, for the whole run: plain poses (24 bytes, against CPose2D's 64). */
+  /** One per scan, for the whole run: plain poses (24 bytes, against CPose2D's 64). */
   struct TrajectoryRecord
   {
     double t;
