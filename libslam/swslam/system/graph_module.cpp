@@ -241,42 +241,44 @@ std::set<EdgeSignature> signatures(const graph::PoseGraph& graph, const graph::G
   return out;
 }
 
-/** The whole graph with the fixed kernel (from the graph's poses or LAGO's); then, if that
- * switched off an edge it had not switched off at the last full optimization (`off`, updated),
- * graduated non-convexity from its result, and the result of lower cost under the fixed kernel
- * (the cost both minimize). Started at the chain's guess, the fixed kernel gives no weight to
- * loops that disagree with the chain by far, right or wrong: a wrong consecutive edge keeps the
- * chain and the true loops are switched off. GNC weighs every edge again from a convex stage
- * (doc/graph-optimization.md). Its final least-squares solve costs a little more under the
- * kernel when both switch the same edges off, so then the fixed result stays. An edge the fixed
- * kernel switches off again has had that second look, whichever result was kept. */
-graph::OptimizationReport optimizeFullTwice(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params,
-                                            std::set<EdgeSignature>& off)
+/** The whole graph with the fixed kernel (from the graph's poses or LAGO's); `anew` tells
+ * whether it switched off an edge it had not switched off at the last full optimization
+ * (`off`, updated). Started at the chain's guess, the fixed kernel gives no weight to loops that
+ * disagree with the chain by far, right or wrong: a wrong consecutive edge keeps the chain and
+ * the true loops are switched off. Such a result gets a second look (secondLook). An edge the
+ * fixed kernel switches off again has had it, whichever result was kept. */
+graph::OptimizationReport optimizeFixed(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params,
+                                        std::set<EdgeSignature>& off, bool& anew)
 {
-  if (params.kernel_schedule != graph::KernelSchedule::Fixed)
-    return graph::optimizeFull(graph, params);
   graph::GraphSubproblem sub = graph::fullSubproblem(graph, params);
   graph::OptimizationReport report = graph::optimizeFromBestStart(sub.problem, params);
   std::set<EdgeSignature> fixed_off = signatures(graph, sub, report.switched_off);
-  const bool anew = std::any_of(fixed_off.begin(), fixed_off.end(), [&](const auto& e) { return off.count(e) == 0; });
+  anew = std::any_of(fixed_off.begin(), fixed_off.end(), [&](const auto& e) { return off.count(e) == 0; });
   off = std::move(fixed_off);
-  if (anew)
-  {
-    graph::GraphProblem second = sub.problem;
-    graph::GraphOptimizerParams gnc = params;
-    gnc.kernel_schedule = graph::KernelSchedule::Gnc;
-    graph::OptimizationReport second_report = graph::optimizeGraphProblem(second, gnc);
-    const auto kernels = graph::uniformKernels(params.kernel());
-    if (second_report.status != graph::OptimizationStatus::Diverged &&
-        (report.status == graph::OptimizationStatus::Diverged ||
-         graph::robustCost(second, kernels) < graph::robustCost(sub.problem, kernels)))
-    {
-      sub.problem.poses = std::move(second.poses);
-      report = std::move(second_report);
-    }
-  }
   if (report.status != graph::OptimizationStatus::Diverged) graph::writeBack(sub, graph);
   for (size_t& k : report.switched_off) k = sub.edge_indices[k];  // the graph's edge indices
+  return report;
+}
+
+/** Graduated non-convexity on the whole graph from its poses, kept if it costs less under the
+ * fixed kernel than the graph as it is (the cost both minimize): GNC weighs every edge again from
+ * a convex stage (doc/graph-optimization.md). Its final least-squares solve costs a little more
+ * under the kernel when both switch the same edges off, so then the graph stays. None if it
+ * stays. */
+std::optional<graph::OptimizationReport> secondLook(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params)
+{
+  graph::GraphSubproblem sub = graph::fullSubproblem(graph, params);
+  graph::GraphProblem second = sub.problem;
+  graph::GraphOptimizerParams gnc = params;
+  gnc.kernel_schedule = graph::KernelSchedule::Gnc;
+  graph::OptimizationReport report = graph::optimizeGraphProblem(second, gnc);
+  const auto kernels = graph::uniformKernels(params.kernel());
+  if (report.status == graph::OptimizationStatus::Diverged ||
+      !(graph::robustCost(second, kernels) < graph::robustCost(sub.problem, kernels)))
+    return std::nullopt;
+  sub.problem.poses = std::move(second.poses);
+  graph::writeBack(sub, graph);
+  for (size_t& k : report.switched_off) k = sub.edge_indices[k];
   return report;
 }
 }  // namespace
@@ -290,9 +292,25 @@ loop::LoopNode GraphModule::loopNode(size_t n) const
 
 void GraphModule::optimize(bool full, GraphStep& step)
 {
-  step.full = full;
   std::lock_guard<std::mutex> lock(mutex_);
-  step.report = full ? optimizeFullTwice(graph_, graph_params_, switched_off_) : graph::optimizeWindow(graph_, graph_params_);
+  // A second look is taken at the next step that optimizes only the window, so that no step
+  // runs both whole-graph solves.
+  std::optional<graph::OptimizationReport> looked;
+  if (!full && second_look_due_)
+  {
+    second_look_due_ = false;
+    looked = secondLook(graph_, graph_params_);
+  }
+  bool anew = false;
+  if (looked) step.report = std::move(*looked);
+  else if (!full) step.report = graph::optimizeWindow(graph_, graph_params_);
+  else if (graph_params_.kernel_schedule != graph::KernelSchedule::Fixed)
+    step.report = graph::optimizeFull(graph_, graph_params_);
+  else
+    step.report = optimizeFixed(graph_, graph_params_, switched_off_, anew);
+  second_look_due_ = second_look_due_ || anew;
+  full = full || looked;
+  step.full = step.full || full;
   const std::vector<graph::PoseGraph::TNodeID> ids =
       full ? graph_.nodeIds() : graph_.newestNodes(graph_params_.window_size);
   step.reinsert.scan = step.scan;
@@ -312,6 +330,7 @@ GraphStep GraphModule::optimizeAll(size_t scan)
   if (nodes_.empty()) return step;
   schedule_.ranFull(nodes_.size() - 1);
   optimize(true, step);
+  if (second_look_due_) optimize(false, step);  // the run ends: now
   return step;
 }
 
@@ -340,6 +359,7 @@ GraphStep GraphModule::refineAll(size_t scan, const loop::FinalRefinementParams&
     schedule_.ranFull(nodes_.size() - 1);
     optimize(true, step);
   }
+  if (second_look_due_) optimize(false, step);  // the run ends: now
   return step;
 }
 

@@ -113,6 +113,9 @@ class GraphModule
   loop::LoopCorroboration corroboration_;    ///< only the owning thread
   /** The edges the last full optimization switched off; only the owning thread. */
   std::set<EdgeSignature> switched_off_;
+  /** A full optimization switched an edge off anew: GNC takes a second look at the next step
+   * that optimizes only the window (or at the end of the run). Only the owning thread. */
+  bool second_look_due_ = false;
   /** The loops accepted at each node still in the sliding window (max_nodes_per_area > 0): its
    * merge is decided as it leaves the window. Only the owning thread. */
   std::map<size_t, std::vector<graph::Constraint>> loops_of_window_;
