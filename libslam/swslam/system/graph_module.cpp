@@ -1,6 +1,5 @@
 #include <swslam/system/graph_module.h>
 
-#include <swslam/graph/initialization.h>
 #include <swslam/graph/sliding_window.h>
 #include <swslam/loop/final_refinement.h>
 
@@ -226,37 +225,33 @@ bool repeatsAChainStep(const graph::PoseGraph& graph, size_t k)
   return false;
 }
 
-/** The switched-off edges of a report on `sub` that may ask for a second look: by their nodes
- * and kind (a fused edge keeps them), those that repeat a chain step left out. Such an edge
- * is weighed against the other measurements of that step alike from any start. */
-std::set<EdgeSignature> signatures(const graph::PoseGraph& graph, const graph::GraphSubproblem& sub,
-                                   const std::vector<size_t>& switched_off)
+/** The switched-off edges of a report (graph edge indices) that may ask for a second look: by
+ * their nodes and kind (a fused edge keeps them), those that repeat a chain step left out. Such
+ * an edge is weighed against the other measurements of that step alike from any start. */
+std::set<EdgeSignature> signatures(const graph::PoseGraph& graph, const std::vector<size_t>& switched_off)
 {
   std::set<EdgeSignature> out;
   for (const size_t k : switched_off)
   {
-    const graph::PoseGraph::Edge& e = graph.edge(sub.edge_indices[k]);
-    if (!repeatsAChainStep(graph, sub.edge_indices[k])) out.emplace(e.from, e.to, static_cast<int>(e.kind));
+    const graph::PoseGraph::Edge& e = graph.edge(k);
+    if (!repeatsAChainStep(graph, k)) out.emplace(e.from, e.to, static_cast<int>(e.kind));
   }
   return out;
 }
 
-/** The whole graph with the fixed kernel (from the graph's poses or LAGO's); `anew` tells
- * whether it switched off an edge it had not switched off at the last full optimization
- * (`off`, updated). Started at the chain's guess, the fixed kernel gives no weight to loops that
- * disagree with the chain by far, right or wrong: a wrong consecutive edge keeps the chain and
- * the true loops are switched off. Such a result gets a second look (secondLook). An edge the
- * fixed kernel switches off again has had it, whichever result was kept. */
+/** The whole graph with the fixed kernel (optimizeFull: from the graph's poses or LAGO's);
+ * `anew` tells whether it switched off an edge it had not switched off at the last full
+ * optimization (`off`, updated). Started at the chain's guess, the fixed kernel gives no weight
+ * to loops that disagree with the chain by far, right or wrong: a wrong consecutive edge keeps
+ * the chain and the true loops are switched off. Such a result gets a second look (secondLook).
+ * An edge the fixed kernel switches off again has had it, whichever result was kept. */
 graph::OptimizationReport optimizeFixed(graph::PoseGraph& graph, const graph::GraphOptimizerParams& params,
                                         std::set<EdgeSignature>& off, bool& anew)
 {
-  graph::GraphSubproblem sub = graph::fullSubproblem(graph, params);
-  graph::OptimizationReport report = graph::optimizeFromBestStart(sub.problem, params);
-  std::set<EdgeSignature> fixed_off = signatures(graph, sub, report.switched_off);
+  graph::OptimizationReport report = graph::optimizeFull(graph, params);
+  std::set<EdgeSignature> fixed_off = signatures(graph, report.switched_off);
   anew = std::any_of(fixed_off.begin(), fixed_off.end(), [&](const auto& e) { return off.count(e) == 0; });
   off = std::move(fixed_off);
-  if (report.status != graph::OptimizationStatus::Diverged) graph::writeBack(sub, graph);
-  for (size_t& k : report.switched_off) k = sub.edge_indices[k];  // the graph's edge indices
   return report;
 }
 
