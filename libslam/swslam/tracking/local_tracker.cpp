@@ -130,7 +130,8 @@ LocalTracker::Predicted LocalTracker::predict(const std::optional<CPose2D>& odom
     p.motion = *odometry_increment;
   else if (tracking_.constant_velocity)
     p.motion =
-        geometry::scaledMotion(last_motion_, intervalRatio(interval, last_interval_, tracking_.max_interval_ratio));
+        geometry::scaledMotion(last_motion_, intervalRatio(interval, last_interval_, tracking_.max_interval_ratio,
+                                                           tracking_.constant_velocity_horizon));
   last_interval_ = interval;
   p.relative = relative_ + p.motion;
   p.sensor.guess = geometry::sensorMotion(keyframes_.back().sensor_pose, p.relative);

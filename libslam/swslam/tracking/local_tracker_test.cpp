@@ -260,7 +260,39 @@ double corridorDrift(const TrackingParams& tp)
   }
   return worst;
 }
+/** Along a corridor lined with posts every 0.8 m at 3.6 m/s, 18 scans a second, with eight
+ * scans dropped every 30 (a 0.43 s gap of 1.55 m, as in the UAL campus log): the last motion
+ * scaled by 4 at most is then 0.78 m short, about a post's spacing. Returns the worst change of
+ * the along-corridor error from one scan to the next [m] (slow drift aside: a jump). */
+double droppedScansJump(const TrackingParams& tp)
+{
+  auto world = test::corridorWorld();
+  for (double x = -10; x <= 100; x += 0.8) world.circles.push_back({x, 1.0, 0.1});
+  std::mt19937 rng(13);
+  LocalTracker tracker(tp, plicp::PlicpParams());
+  const double dt = 1 / 18.0, speed = 3.6;
+  double t = 0, worst = 0, last_error = 0;
+  for (int k = 0; t * speed < 80; k++)
+  {
+    const double x = speed * t;
+    auto obs = test::simulateObservation(world, CPose2D(x, 0, 0), 541, 1.5 * M_PI, 8, 0.01, rng);
+    obs.timestamp = mrpt::Clock::fromDouble(1000 + t);
+    const double error = tracker.process(obs).pose.x() - x;
+    worst = std::max(worst, std::abs(error - last_error));
+    last_error = error;
+    t += k % 30 == 29 ? 8 * dt : dt;
+  }
+  return worst;
+}
 }  // namespace
+
+TEST(LocalTracker, AGapOfDroppedScansIsPredictedAtConstantVelocity)
+{
+  TrackingParams tp;  // constant_velocity_horizon = 1 s
+  EXPECT_LT(droppedScansJump(tp), 0.15);
+  tp.constant_velocity_horizon = 0.05;  // scaled by max_interval_ratio = 4 at most
+  EXPECT_GT(droppedScansJump(tp), 0.5) << "a gap predicted a quarter short should lose a post here";
+}
 
 TEST(LocalTracker, IrregularScanIntervalsArePredictedAtConstantVelocity)
 {

@@ -26,8 +26,10 @@ const common::ParamTable<TrackingParams>& TrackingParams::table()
           .angle("lost_prior_sigma_theta_DEG", &P::lost_prior_sigma_theta, common::above(0), "same for rotation")
           .flag("constant_velocity", &P::constant_velocity,
                 "predict the previous motion at constant velocity over the scan's interval (false: per scan, as the paper)")
+          .real("constant_velocity_horizon", &P::constant_velocity_horizon, "s", common::above(0),
+                "...exactly while both intervals are within this long (a vehicle's speed holds)...")
           .real("max_interval_ratio", &P::max_interval_ratio, "", common::atLeast(1),
-                "...scaled by at most this many times (or 1 / this) across a gap in the log")
+                "...else scaled by at most this many times (or 1 / this), or over at most the horizon")
           .real("ambiguity_factor", &P::ambiguity_factor, "", common::atLeast(0),
                 "a match direction with less information than this many times what noise fakes is weak (0: never)")
           .integer("unobservable_min_rays", &P::unobservable_min_rays, "", common::atLeast(0),

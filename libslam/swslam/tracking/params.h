@@ -21,7 +21,8 @@ struct TrackingParams
   double lost_prior_sigma_xy = 1.0;    ///< [m] std of the weak prior edge when a node is made without a match
   double lost_prior_sigma_theta = mrpt::DEG2RAD(10.0);  ///< [rad]
   bool constant_velocity = true;   ///< predict the previous motion over the new scan interval (false: per scan)
-  double max_interval_ratio = 4.0;  ///< ...scaled by at most this (or 1 / this) times
+  double constant_velocity_horizon = 1.0;  ///< [s] ...exactly while both intervals are within this...
+  double max_interval_ratio = 4.0;  ///< ...else scaled by at most this (or 1 / this) times
   /** A match direction is weak (ambiguous) when its information is below this many times what
    * noise fakes along a featureless one (0: never; tracking/ambiguity.h) */
   double ambiguity_factor = 1.0;
