@@ -143,7 +143,70 @@ constexpr size_t kMinEdgesForEarlyEnd = 1000;
 /** Graduated stages stop lowering the shape's bound here; a lower target comes next. */
 constexpr double kLowestGraduatedAlpha = -10.0;
 
+/** Adds stage k's report `s` to the run's. */
+void addStage(OptimizationReport& total, const OptimizationReport& s, size_t k)
+{
+  if (k == 0)
+    total = s;
+  else
+  {
+    total.iterations += s.iterations;
+    total.accepted_steps += s.accepted_steps;
+    total.cg_iterations += s.cg_iterations;
+    total.status = s.status;
+    total.message = s.message;
+  }
+  total.stages = k + 1;
+}
+
+/** gnc: little outlier evidence, at most kFewOutliers of the edges that the target kernel
+ * would switch off at the problem's poses, in a problem of kMinEdgesForEarlyEnd edges or more.
+ * Then least squares on the others follows at once: with none, the lower shapes would weigh
+ * every edge about as least squares does; with a few, the graph's poses are already near the
+ * inliers' optimum, and the refit rounds take back an edge that agrees with it and take out one
+ * the graph had absorbed. */
+bool fewOutliersLeft(const GraphProblem& problem, const GraphOptimizerParams& params)
+{
+  if (problem.edges.size() < kMinEdgesForEarlyEnd) return false;
+  const size_t off = switchedOffEdges(problem, uniformKernels(params.kernel()), params.switched_off_weight).size();
+  return static_cast<double>(off) <= kFewOutliers * static_cast<double>(problem.edges.size());
+}
+
+/** The run ended early with `message`; the problem's poses go back to `given` if `restore`. */
+OptimizationReport ended(OptimizationReport total, GraphProblem& problem, const std::vector<geometry::Pose2>& given,
+                         bool restore, const std::string& message, mrpt::system::CTicTac& timer)
+{
+  if (restore) problem.poses = given;
+  total.message = message;
+  total.time_s = timer.Tac();
+  return total;
+}
+
 }  // namespace
+
+GraduatedStage graduatedStage(size_t k, const GraphOptimizerParams& params)
+{
+  const bool adaptive = params.kernel_schedule == KernelSchedule::Adaptive;
+  const double target = adaptive ? params.adaptive_alpha_min : params.kernel_alpha;
+  GraduatedStage stage;
+  stage.alpha_floor = 1.0 - static_cast<double>(k) * params.gnc_alpha_step;
+  stage.last = stage.alpha_floor <= target || stage.alpha_floor < kLowestGraduatedAlpha;
+  if (stage.last) stage.alpha_floor = target;
+  // The convex first stage solves exactly, every edge coupled: from the given poses the true
+  // loops are as far off as the false ones (drift), and decoupling them there spoiled the stage
+  // (with no false loop, 145 edges decoupled after its first step, and 69 true edges ended
+  // switched off by the target kernel instead of none). Where that factor is dense (a thousand
+  // long false loops), the weak edges are solved by conjugate gradients off the factor's
+  // pattern instead (Coupling::Exact). The next stage starts with every edge coupled again,
+  // then decouples those weak at its own poses. The adaptive kernel decouples nothing: with
+  // it, 100 random false loops ended 0.027 m off with a true edge switched off, against
+  // 0.0004 m.
+  stage.coupling = adaptive ? Coupling::All
+                   : k == 0 ? Coupling::Exact
+                   : k == 1 ? Coupling::DecoupleWeakAfresh
+                            : Coupling::DecoupleWeak;
+  return stage;
+}
 
 OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizerParams& params)
 {
@@ -155,79 +218,32 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
       adaptive ? &shapeEstimatorFor(params.adaptive_alpha_min, params.adaptive_alpha_max, params.adaptive_alpha_step,
                                   params.adaptive_truncation)
                : nullptr;
-  const double alpha_end = adaptive ? params.adaptive_alpha_min : params.kernel_alpha;
   const std::vector<geometry::Pose2> given = problem.poses;
   GraphOptimizerParams stage = params;
   stage.max_iterations = std::min(params.max_iterations, params.gnc_stage_iterations);
-  // Without a fixed target (adaptive), no stage ends the graduation early.
-  const KindKernels target = uniformKernels(params.kernel());
   CoupledSystem sys;  // one pattern for every stage (their edges are the same)
   double damping = 0;  // carried from stage to stage and into the least squares after them
   OptimizationReport total;
   KindKernels kernels, previous;
   for (size_t k = 0;; ++k)
   {
-    // The bound of this stage's shape: 1 (convex), then lower by gnc_alpha_step each stage;
-    // the last one is alpha_end (a shape below kLowestGraduatedAlpha is reached at once).
-    double floor = 1.0 - static_cast<double>(k) * params.gnc_alpha_step;
-    const bool last = floor <= alpha_end || floor < kLowestGraduatedAlpha;
-    if (last) floor = alpha_end;
-    bool limited = !last;  // gnc: the stages go on down to the target
-    kernels = adaptive ? estimateKernels(problem, params, *shapes, floor, 1.0, false, limited)
-                       : uniformKernels({floor, params.kernel_c});
-    // The convex first stage solves exactly, every edge coupled: from the given poses the
-    // true loops are as far off as the false ones (drift), and decoupling them there
-    // spoiled the stage (with no false loop, 145 edges decoupled after its first step, and
-    // 69 true edges ended switched off by the target kernel instead of none). Where that
-    // factor is dense (a thousand long false loops), the weak edges are solved by conjugate
-    // gradients off the factor's pattern instead (Coupling::Exact). The next stage starts
-    // with every edge coupled again, then decouples those weak at its own poses. The
-    // adaptive kernel decouples nothing: with it, 100 random false loops ended 0.027 m off
-    // with a true edge switched off, against 0.0004 m.
-    const Coupling coupling = adaptive ? Coupling::All
-                              : k == 0 ? Coupling::Exact
-                              : k == 1 ? Coupling::DecoupleWeakAfresh
-                                       : Coupling::DecoupleWeak;
-    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, coupling, &damping});
-    if (k == 0)
-    {
-      total = s;
-      total.initial_cost = evaluate(problem, given, kernels, measurementRotations(problem)).cost;
-    }
-    else
-    {
-      total.iterations += s.iterations;
-      total.accepted_steps += s.accepted_steps;
-      total.cg_iterations += s.cg_iterations;
-      total.status = s.status;
-      total.message = s.message;
-    }
-    total.stages = k + 1;
+    const GraduatedStage g = graduatedStage(k, params);
+    bool limited = !g.last;  // gnc: the stages go on down to the target
+    kernels = adaptive ? estimateKernels(problem, params, *shapes, g.alpha_floor, 1.0, false, limited)
+                       : uniformKernels({g.alpha_floor, params.kernel_c});
+    const OptimizationReport s = optimizeWithKernels(problem, stage, kernels, {&sys, g.coupling, &damping});
+    addStage(total, s, k);
+    if (k == 0) total.initial_cost = evaluate(problem, given, kernels, measurementRotations(problem)).cost;
     if (s.status == OptimizationStatus::Diverged)
-    {
-      problem.poses = given;
-      total.message = "stage " + std::to_string(k + 1) + ": " + s.message;
-      total.time_s = timer.Tac();
-      return total;
-    }
-    if (s.status == OptimizationStatus::NothingToOptimize)
-    {
-      total.time_s = timer.Tac();
-      return total;
-    }
+      return ended(total, problem, given, true, "stage " + std::to_string(k + 1) + ": " + s.message, timer);
+    if (s.status == OptimizationStatus::NothingToOptimize) return ended(total, problem, given, false, s.message, timer);
     // Done at the last bound, or (adaptive) when the bound no longer holds a shape back and
     // the estimate has settled: from a poor guess every residual is large, so the first
     // scales are wide and the shapes near 2 until the poses come near the inliers.
-    if (last || (!limited && k > 0 && settled(previous, kernels, params.adaptive_alpha_step))) break;
-    // gnc: little outlier evidence, at most kFewOutliers of the edges that the target kernel
-    // would switch off at these poses: go straight to least squares on the others. With none,
-    // the lower shapes would weigh every edge about as least squares does; with a few, the
-    // graph's poses are already near the inliers' optimum, and the refit rounds take back an
-    // edge that agrees with it and take out one the graph had absorbed.
-    if (!adaptive && problem.edges.size() >= kMinEdgesForEarlyEnd && static_cast<double>(switchedOffEdges(problem, target, params.switched_off_weight).size()) <=
-                         kFewOutliers * static_cast<double>(problem.edges.size()))
+    if (g.last || (!limited && k > 0 && settled(previous, kernels, params.adaptive_alpha_step))) break;
+    if (!adaptive && fewOutliersLeft(problem, params))
     {
-      kernels = target;
+      kernels = uniformKernels(params.kernel());
       break;
     }
     previous = kernels;
@@ -242,12 +258,7 @@ OptimizationReport optimizeGraduated(GraphProblem& problem, const GraphOptimizer
   const OptimizationReport refit = refitKept(problem, kernels, given, params, sys, damping, kept, total);
   total.status = refit.status;
   if (refit.status == OptimizationStatus::Diverged)
-  {
-    problem.poses = given;
-    total.message = "the least-squares solve on the kept edges: " + refit.message;
-    total.time_s = timer.Tac();
-    return total;
-  }
+    return ended(total, problem, given, true, "the least-squares solve on the kept edges: " + refit.message, timer);
   const Evaluation end = evaluate(problem, problem.poses, kernels, measurementRotations(problem));
   total.kernels = kernels;
   total.final_chi2 = end.chi2;

@@ -2,12 +2,14 @@
 // odometry guess: the kernel switches the false loops off and keeps every true edge, and the
 // result is the optimum of the graph without them (with no false loop, the least-squares
 // optimum).
+#include <swslam/graph/graduated.h>
 #include <swslam/graph/optimizer.h>
 #include <swslam/graph/sliding_window.h>
 #include <swslam/graph/synthetic.h>
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <set>
 
 using namespace swslam::graph;
@@ -55,6 +57,42 @@ GraphOptimizerParams adaptive()
   return p;
 }
 }  // namespace
+
+TEST(Gnc, TheScheduleLowersTheBoundStageByStageToTheTarget)
+{
+  GraphOptimizerParams p;
+  p.kernel_schedule = KernelSchedule::Gnc;
+  p.kernel_alpha = -2;
+  p.gnc_alpha_step = 1;
+  const std::vector<double> floors = {1, 0, -1, -2};
+  const std::vector<Coupling> couplings = {Coupling::Exact, Coupling::DecoupleWeakAfresh, Coupling::DecoupleWeak,
+                                           Coupling::DecoupleWeak};
+  for (size_t k = 0; k < floors.size(); ++k)
+  {
+    const GraduatedStage s = graduatedStage(k, p);
+    EXPECT_DOUBLE_EQ(s.alpha_floor, floors[k]) << "stage " << k;
+    EXPECT_EQ(s.last, k + 1 == floors.size()) << "stage " << k;
+    EXPECT_EQ(s.coupling, couplings[k]) << "stage " << k;
+  }
+  // A step past the target stops at it.
+  p.gnc_alpha_step = 1.5;
+  EXPECT_FALSE(graduatedStage(1, p).last);
+  EXPECT_DOUBLE_EQ(graduatedStage(2, p).alpha_floor, -2);
+  EXPECT_TRUE(graduatedStage(2, p).last);
+  // Welsch's shape (-inf) is taken at once below -10.
+  p.gnc_alpha_step = 1;
+  p.kernel_alpha = -std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(graduatedStage(11, p).alpha_floor, -10);
+  EXPECT_FALSE(graduatedStage(11, p).last);
+  EXPECT_TRUE(graduatedStage(12, p).last);
+  EXPECT_EQ(graduatedStage(12, p).alpha_floor, p.kernel_alpha);
+  // The adaptive kernel's target is adaptive_alpha_min, every edge coupled.
+  p.kernel_schedule = KernelSchedule::Adaptive;
+  p.adaptive_alpha_min = -3;
+  EXPECT_FALSE(graduatedStage(3, p).last);
+  EXPECT_TRUE(graduatedStage(4, p).last);
+  for (size_t k = 0; k < 5; ++k) EXPECT_EQ(graduatedStage(k, p).coupling, Coupling::All);
+}
 
 TEST(Gnc, WithoutOutliersItReachesLeastSquares)
 {
