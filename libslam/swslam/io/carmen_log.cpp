@@ -94,32 +94,23 @@ bool CarmenLogReader::nextLine(std::string& line)
   }
 }
 
+struct CarmenLogReader::Prescan
+{
+  CarmenLogParams mountings;
+  std::map<std::string, SaturationDetector> detectors;
+  std::map<std::string, std::vector<double>> times;  ///< per laser label, and "ODOM"
+  size_t stamps = 0, out_of_range = 0, first_out_line = 0, odom_lines = 0;
+  bool laser_odometry = false;
+  double first_out = 0;
+};
+
 void CarmenLogReader::prescan()
 {
   // First pass: each laser's readings (saturation) and each stream's timestamps (repair
   // period), and the lasers' mountings that the PARAM lines state. Malformed lines are
   // skipped silently here; the second pass reports them.
-  open();
-  {
-    std::string head(4096, '\0');
-    try
-    {
-      head.resize(file_->read(head.data(), head.size()));
-    }
-    catch (const GzipError&)
-    {
-      head.clear();  // the second pass reports it, after the lines before it
-    }
-    if (const std::string problem = wideTextProblem(head); !problem.empty())
-      throw std::runtime_error("carmen: '" + path_ + "' " + problem);
-    open();
-  }
-  CarmenLogParams mountings;
-  std::map<std::string, SaturationDetector> detectors;
-  std::map<std::string, std::vector<double>> times;
-  size_t stamps = 0, out_of_range = 0, first_out_line = 0, odom_lines = 0;
-  bool laser_odometry = false;
-  double first_out = 0;
+  checkHead();
+  Prescan p;
   std::string text;
   for (;;)
   {
@@ -140,47 +131,75 @@ void CarmenLogReader::prescan()
     {
       continue;
     }
-    if (line.kind == CarmenLine::Kind::Param && carmenParamIsUsed(line.param_name))
-      if (const auto v = numericParam(line.param_value))
-      {
-        mountings[line.param_name] = *v;
-        for (const std::string sensor : {"front", "rear"})
-          if (const std::string problem = sensor::mountingProblem(mrpt::poses::CPose3D(carmenOffsetPose(sensor, mountings)));
-              !problem.empty())
-            throw std::runtime_error("carmen: '" + path_ + "' line " + std::to_string(line_no_) + ": PARAM " +
-                                     line.param_name + " " + line.param_value + " puts the " + sensor + " laser's " +
-                                     problem + ": not converted");
-      }
-    if (line.kind == CarmenLine::Kind::Odometry) odom_lines++;
-    if (line.kind == CarmenLine::Kind::Laser) laser_odometry |= line.laser.has_odometry;
-    const bool odometry = line.kind == CarmenLine::Kind::Odometry && !params_.laser_only;
-    if (!odometry && line.kind != CarmenLine::Kind::Laser) continue;
-    const double stamp = odometry ? line.odometry.timestamp : line.laser.timestamp;
-    stamps++;
-    if (!stampInRange(stamp))
-    {
-      if (out_of_range++ == 0)
-      {
-        first_out = stamp;
-        first_out_line = line_no_;
-      }
-      continue;
-    }
-    if (odometry)
-    {
-      times["ODOM"].push_back(stamp);
-      continue;
-    }
-    const auto& laser = line.laser;
-    times[laser.label].push_back(laser.timestamp);
-    auto it = detectors.try_emplace(laser.label, params_.saturation_rel_tol,
-                                    params_.saturation_min_count).first;
-    for (float r : laser.ranges) it->second.add(r);
+    prescanLine(line, p);
   }
-  stats_.odometry_source = odom_lines > 0  ? CarmenOdometrySource::OdomLines
-                           : laser_odometry ? CarmenOdometrySource::LaserFields
-                                            : CarmenOdometrySource::None;
-  for (const auto& [label, d] : detectors)
+  stats_.odometry_source = p.odom_lines > 0    ? CarmenOdometrySource::OdomLines
+                           : p.laser_odometry ? CarmenOdometrySource::LaserFields
+                                              : CarmenOdometrySource::None;
+  reportSaturation(p);
+  checkStampsInRange(p);
+  setTimestampRepair(p);
+}
+
+void CarmenLogReader::checkHead()
+{
+  open();
+  std::string head(4096, '\0');
+  try
+  {
+    head.resize(file_->read(head.data(), head.size()));
+  }
+  catch (const GzipError&)
+  {
+    head.clear();  // the second pass reports it, after the lines before it
+  }
+  if (const std::string problem = wideTextProblem(head); !problem.empty())
+    throw std::runtime_error("carmen: '" + path_ + "' " + problem);
+  open();
+}
+
+void CarmenLogReader::prescanLine(const CarmenLine& line, Prescan& p)
+{
+  if (line.kind == CarmenLine::Kind::Param && carmenParamIsUsed(line.param_name))
+    if (const auto v = numericParam(line.param_value))
+    {
+      p.mountings[line.param_name] = *v;
+      for (const std::string sensor : {"front", "rear"})
+        if (const std::string problem = sensor::mountingProblem(mrpt::poses::CPose3D(carmenOffsetPose(sensor, p.mountings)));
+            !problem.empty())
+          throw std::runtime_error("carmen: '" + path_ + "' line " + std::to_string(line_no_) + ": PARAM " +
+                                   line.param_name + " " + line.param_value + " puts the " + sensor + " laser's " +
+                                   problem + ": not converted");
+    }
+  if (line.kind == CarmenLine::Kind::Odometry) p.odom_lines++;
+  if (line.kind == CarmenLine::Kind::Laser) p.laser_odometry |= line.laser.has_odometry;
+  const bool odometry = line.kind == CarmenLine::Kind::Odometry && !params_.laser_only;
+  if (!odometry && line.kind != CarmenLine::Kind::Laser) return;
+  const double stamp = odometry ? line.odometry.timestamp : line.laser.timestamp;
+  p.stamps++;
+  if (!stampInRange(stamp))
+  {
+    if (p.out_of_range++ == 0)
+    {
+      p.first_out = stamp;
+      p.first_out_line = line_no_;
+    }
+    return;
+  }
+  if (odometry)
+  {
+    p.times["ODOM"].push_back(stamp);
+    return;
+  }
+  const auto& laser = line.laser;
+  p.times[laser.label].push_back(laser.timestamp);
+  auto it = p.detectors.try_emplace(laser.label, params_.saturation_rel_tol, params_.saturation_min_count).first;
+  for (float r : laser.ranges) it->second.add(r);
+}
+
+void CarmenLogReader::reportSaturation(const Prescan& p)
+{
+  for (const auto& [label, d] : p.detectors)
   {
     saturation_[label] = d.threshold();
     largest_[label] = d.largest();
@@ -193,25 +212,28 @@ void CarmenLogReader::prescan()
       warn(printed_geometry_, path_ + ": " + label + ": " + buf);
     }
   }
-  if (out_of_range > 0 && 2 * out_of_range > stamps)
-  {
-    char buf[200];
-    std::snprintf(buf, sizeof(buf), "%zu of %zu timestamps are out of range (beyond +-%.0f s, the year 2200; the first, %.6g, at line %zu)",
-                  out_of_range, stamps, common::kLatestPlausibleTime, first_out, first_out_line);
-    throw std::runtime_error("carmen: '" + path_ + "': " + buf + common::timeUnitHint(first_out) +
-                             ": not converted");
-  }
+}
+
+void CarmenLogReader::checkStampsInRange(const Prescan& p) const
+{
+  if (p.out_of_range == 0 || 2 * p.out_of_range <= p.stamps) return;
+  char buf[200];
+  std::snprintf(buf, sizeof(buf), "%zu of %zu timestamps are out of range (beyond +-%.0f s, the year 2200; the first, %.6g, at line %zu)",
+                p.out_of_range, p.stamps, common::kLatestPlausibleTime, p.first_out, p.first_out_line);
+  throw std::runtime_error("carmen: '" + path_ + "': " + buf + common::timeUnitHint(p.first_out) + ": not converted");
+}
+
+void CarmenLogReader::setTimestampRepair(const Prescan& p)
+{
   double earliest = 0;
-  for (const auto& [stream, t] : times)
+  for (const auto& [stream, t] : p.times)
     if (stream != "ODOM" && !t.empty())
       earliest = std::min(earliest, *std::min_element(t.begin(), t.end()));
   stats_.timestamp_offset = -earliest;
-  for (const auto& [stream, t] : times)
+  for (const auto& [stream, t] : p.times)
   {
-    const double period =
-        medianPositivePeriod(t, params_.max_timestamp_gap, params_.default_period);
-    stamps_.emplace(stream, TimestampSequence(period, params_.max_timestamp_gap,
-                                              params_.repair_timestamps));
+    const double period = medianPositivePeriod(t, params_.max_timestamp_gap, params_.default_period);
+    stamps_.emplace(stream, TimestampSequence(period, params_.max_timestamp_gap, params_.repair_timestamps));
     stats_.timestamps[stream].repair_period = period;
   }
 }

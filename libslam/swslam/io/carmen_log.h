@@ -110,7 +110,17 @@ class CarmenLogReader
   double fractionRead() const;
 
  private:
+  struct Prescan;  ///< what the first pass gathers
   void prescan();
+  /** The file's first 4 KiB: a log in UTF-16 or UTF-32 is refused by name. */
+  void checkHead();
+  void prescanLine(const CarmenLine& line, Prescan& p);
+  /** Each laser's saturation value; readings above it are counted and warned about. */
+  void reportSaturation(const Prescan& p);
+  /** Refuses a log whose timestamps are mostly out of range. */
+  void checkStampsInRange(const Prescan& p) const;
+  /** The offset that starts the lasers' stamps at 0, and each stream's repair period. */
+  void setTimestampRepair(const Prescan& p);
   void open();
   bool nextLine(std::string& line);
   void warn(size_t& printed, const std::string& msg);
