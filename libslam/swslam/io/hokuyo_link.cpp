@@ -178,42 +178,63 @@ void HokuyoLink::retryLater(const std::string& why)
   backoff_ = std::min(options_.max_backoff, backoff_ * 2);
 }
 
-mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
+bool HokuyoLink::connectWhenDue()
 {
   const auto now = steady_clock::now();
-  if (!driver_)
+  if (now < retry_at_)
   {
-    if (now < retry_at_)
+    std::this_thread::sleep_for(std::min<steady_clock::duration>(retry_at_ - now, milliseconds(100)));
+    return false;
+  }
+  std::string why;
+  stats_.attempts++;
+  if (!reachable(why))
+  {
+    retryLater(why + " (retrying, up to every " + std::to_string(options_.max_backoff.count()) + " ms)");
+    return false;
+  }
+  try
+  {
+    std::string failure;
+    if (!connect(failure))
     {
-      std::this_thread::sleep_for(std::min<steady_clock::duration>(retry_at_ - now, milliseconds(100)));
-      return nullptr;
-    }
-    std::string why;
-    stats_.attempts++;
-    if (!reachable(why))
-    {
-      retryLater(why + " (retrying, up to every " + std::to_string(options_.max_backoff.count()) + " ms)");
-      return nullptr;
-    }
-    try
-    {
-      std::string failure;
-      if (!connect(failure))
-      {
-        if (stopping()) return nullptr;  // cut short to stop: not a failure
-        stats_.errors++;
-        retryLater("initialization failed: " + failure);
-        return nullptr;
-      }
-    }
-    catch (const std::exception& e)
-    {
-      dropDriver();
+      if (stopping()) return false;  // cut short to stop: not a failure
       stats_.errors++;
-      retryLater(std::string("cannot connect: ") + mrpt::system::trim(e.what()).substr(0, 200));
-      return nullptr;
+      retryLater("initialization failed: " + failure);
+      return false;
     }
   }
+  catch (const std::exception& e)
+  {
+    dropDriver();
+    stats_.errors++;
+    retryLater(std::string("cannot connect: ") + mrpt::system::trim(e.what()).substr(0, 200));
+    return false;
+  }
+  return true;
+}
+
+void HokuyoLink::scanReceived()
+{
+  if (in_outage_)
+  {
+    const double s = duration<double>(steady_clock::now() - outage_start_).count();
+    log_("sensor: receiving scans again after " + std::to_string(static_cast<int>(s * 10) / 10.0).substr(0, 4) + " s");
+  }
+  else if (stats_.scans == 0)
+    log_("sensor: receiving scans");
+  in_outage_ = false;
+  driver_messages_this_outage_ = 0;
+  if (stream_) garbage_meter_.scan(stream_->bytesRead());
+  stats_.scans++;
+  stats_.connected = true;
+  backoff_ = options_.min_backoff;
+  last_scan_ = steady_clock::now();
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
+{
+  if (!driver_ && !connectWhenDue()) return nullptr;
   if (stream_ && stream_->dead())
   {
     stats_.errors++;
@@ -242,20 +263,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr HokuyoLink::poll()
   }
   if (there)
   {
-    if (in_outage_)
-    {
-      const double s = duration<double>(steady_clock::now() - outage_start_).count();
-      log_("sensor: receiving scans again after " + std::to_string(static_cast<int>(s * 10) / 10.0).substr(0, 4) + " s");
-    }
-    else if (stats_.scans == 0)
-      log_("sensor: receiving scans");
-    in_outage_ = false;
-    driver_messages_this_outage_ = 0;
-    if (stream_) garbage_meter_.scan(stream_->bytesRead());
-    stats_.scans++;
-    stats_.connected = true;
-    backoff_ = options_.min_backoff;
-    last_scan_ = steady_clock::now();
+    scanReceived();
     return obs;
   }
   if (const std::string junk = garbage(bytes); !junk.empty())

@@ -84,6 +84,10 @@ class HokuyoLink
   std::string retryPolicy() const;
 
  private:
+  /** No driver: connects once the backoff has passed; false (and the retry set) if not. */
+  bool connectWhenDue();
+  /** A scan came: the outage (if any) ends, the counters and the backoff reset. */
+  void scanReceived();
   bool reachable(std::string& why) const;
   bool connect(std::string& why);  ///< false (driver dropped, `why` set) if initialize() failed
   void trouble(const std::string& why);     ///< reported once per outage
