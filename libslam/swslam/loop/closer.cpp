@@ -33,7 +33,8 @@ const char* toString(LoopCheck::Verdict v)
   return "unknown";
 }
 
-std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest, const LoopClosureParams& p)
+std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest, const LoopClosureParams& p,
+                                   const std::function<double(size_t)>& path_length)
 {
   const CPose2D& here = graph.pose(newest);  // throws for a missing node
   const auto gap = static_cast<size_t>(p.min_index_gap);
@@ -48,11 +49,25 @@ std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest,
   // The node map is ordered by id: walk the ids old enough, stop past the last one.
   std::vector<std::pair<double, size_t>> near;
   const auto& nodes = graph.network().nodes;
+  std::vector<std::pair<double, size_t>> far;  // beyond max_distance, within the drift's reach
+  const double here_path = path_length ? path_length(newest) : 0;
   for (auto it = nodes.begin(); it != nodes.end() && it->first < newest; ++it)
   {
     if (it->first + gap > newest) break;
     const double d = (it->second.translation() - here.translation()).norm();
-    if (d <= p.max_distance && !graph.isMerged(it->first) && !linked(it->first)) near.emplace_back(d, it->first);
+    if (graph.isMerged(it->first) || linked(it->first)) continue;
+    if (d <= p.max_distance)
+      near.emplace_back(d, it->first);
+    else if (path_length && d <= p.max_search_radius)
+    {
+      const double reach = 3 * p.drift_xy_per_m * std::abs(here_path - path_length(it->first));
+      if (d <= reach) far.emplace_back(d / reach, it->first);
+    }
+  }
+  if (near.empty() && !far.empty())
+  {
+    std::sort(far.begin(), far.end());
+    return {far.front().second};  // the one the drift explains best
   }
   std::sort(near.begin(), near.end());
   near.resize(std::min(near.size(), static_cast<size_t>(p.max_candidates)));
@@ -94,14 +109,16 @@ double matchInlierFraction(const plicp::MatchResult& m)
 namespace
 {
 /** PLICP from the best pose of a correlative search on the old scan alone, around `guess`
- * (sensor frame) within 3 drift standard deviations; `first` when the search finds nothing or
+ * (sensor frame) within 3 drift standard deviations, capped by window_xy (a `far` candidate's:
+ * max_search_radius); `first` when the search finds nothing or
  * is ambiguous (a pose farther than ambiguity_radius from the best scores within
  * ambiguity_margin of it: a self-similar place, where a loop is better missed). */
 plicp::MatchResult searchedLoopMatch(const plicp::ReferenceScan& old_scan, const sensor::Scan& cur, const CPose2D& guess,
-                              const plicp::MatchResult& first, const Eigen::Matrix3d& drift,
+                              const plicp::MatchResult& first, const Eigen::Matrix3d& drift, bool far,
                               correlative::CorrelativeParams s, const LoopClosureParams& p, const plicp::PlicpParams& plicp)
 {
-  s.window_xy = std::min(s.window_xy, 3 * std::sqrt(drift(0, 0)));
+  // A far candidate (beyond max_distance) is searched as far as the drift reaches.
+  s.window_xy = std::min(far ? p.max_search_radius : s.window_xy, 3 * std::sqrt(drift(0, 0)));
   s.window_theta = std::min(s.window_theta, 3 * std::sqrt(drift(2, 2)));
   const correlative::ScorePyramid pyramid = correlative::searchPyramid(correlative::scanRays(old_scan.scan, s.max_range), s);
   const auto points = correlative::thinPoints(cur.points, s.resolution, s.max_range);
@@ -144,7 +161,8 @@ LoopCheck verifyLoop(const graph::PoseGraph& graph, const LoopNode& old, const L
   if (search && search->enabled && old.scan->scan.sensor_pose == newest.scan->scan.sensor_pose &&
       (c.match.status != plicp::MatchStatus::Converged || matchInlierFraction(c.match) < p.min_inlier_fraction))
   {
-    const plicp::MatchResult m = searchedLoopMatch(*old.scan, newest.scan->scan, guess, c.match, drift, *search, p, plicp);
+    const plicp::MatchResult m = searchedLoopMatch(*old.scan, newest.scan->scan, guess, c.match, drift,
+                                                   c.distance > p.max_distance, *search, p, plicp);
     c.searched = m.status != c.match.status || !(m.pose == c.match.pose);
     c.match = m;
   }
@@ -171,7 +189,8 @@ std::vector<LoopCheck> checkLoops(const graph::PoseGraph& graph, const LoopNode&
                                   const std::optional<correlative::CorrelativeParams>& search)
 {
   std::vector<LoopCheck> checks;
-  for (const size_t id : loopCandidates(graph, newest.id, p))
+  const auto path_length = [&](size_t id) { return id == newest.id ? newest.path_length : node(id).path_length; };
+  for (const size_t id : loopCandidates(graph, newest.id, p, path_length))
     checks.push_back(verifyLoop(graph, node(id), newest, p, plicp, search));
   return checks;
 }

@@ -58,9 +58,13 @@ const char* toString(LoopCheck::Verdict v);
 
 /** Candidates for node `newest`: nodes with id <= newest - min_index_gap, not merged into
  * another, whose graph pose is within max_distance and that share no edge with `newest` yet, nearest first, at most
- * max_candidates; none when disabled. One linear pass over the older node poses (a distance
- * each, no scan work). Throws std::invalid_argument if `newest` is not in the graph. */
-std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest, const LoopClosureParams& p);
+ * max_candidates; none when disabled. With none that near and `path_length` given (metres
+ * travelled to a node): the one node within max_search_radius and within 3 drift_xy_per_m
+ * times the path between the two whose distance is the smallest share of that reach. One
+ * linear pass over the older node poses (a distance each, no scan work). Throws
+ * std::invalid_argument if `newest` is not in the graph. */
+std::vector<size_t> loopCandidates(const graph::PoseGraph& graph, size_t newest, const LoopClosureParams& p,
+                                   const std::function<double(size_t)>& path_length = nullptr);
 
 /** Drift covariance of the graph's relative pose after travelling `path_gap` metres:
  * diag(sxy^2, sxy^2, sth^2), sxy = max(drift_xy_per_m * gap, min_drift_sigma_xy), sth alike. */

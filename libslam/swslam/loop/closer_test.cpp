@@ -78,6 +78,30 @@ TEST(LoopCandidates, RespectGapDistanceCountAndExistingEdges)
   EXPECT_THROW(loopCandidates(g, 99, LoopClosureParams()), std::invalid_argument);
 }
 
+TEST(LoopCandidates, WithNoneNearTheOneTheDriftExplainsBestIsLookedFor)
+{
+  // Nodes 0..9 along x, then a long way round (path length 10 m a node): node 60 is 8-17 m
+  // from nodes 0..9 on the estimate, none within max_distance (5 m).
+  graph::PoseGraph g;
+  for (size_t k = 0; k < 10; k++) g.addNode(k, CPose2D(double(k), 0, 0));
+  for (size_t k = 10; k < 60; k++) g.addNode(k, CPose2D(100.0, double(k), 0));
+  g.addNode(60, CPose2D(8.0, 8.0, 0));
+  const auto path = [](size_t id) { return 10.0 * static_cast<double>(id); };
+  LoopClosureParams p;  // drift 3 cm/m: reach 3 x 0.03 x (600 - 10 k) m, 54 m for node 0
+  EXPECT_TRUE(loopCandidates(g, 60, p).empty()) << "without path lengths: max_distance only";
+  // Nodes 0..9 lie 8.0-12.8 m away within reaches of 54-45.9 m: node 7 (8.06 m of 47.7)
+  // fits best, before node 6 (8.25 of 48.6) and node 8 (8.0 of 46.8).
+  EXPECT_EQ(loopCandidates(g, 60, p, path), (std::vector<size_t>{7}));
+  p.max_search_radius = 7.9;  // none within the search radius
+  EXPECT_TRUE(loopCandidates(g, 60, p, path).empty());
+  p.max_search_radius = 25;
+  p.drift_xy_per_m = 0.004;  // reaches 7.2-6.1 m: none of them that far drifted
+  EXPECT_TRUE(loopCandidates(g, 60, p, path).empty());
+  p.drift_xy_per_m = 0.03;
+  g.addNode(61, CPose2D(8.0, 4.0, 0));  // node 8 within max_distance: near candidates only
+  EXPECT_EQ(loopCandidates(g, 61, p, path), (std::vector<size_t>{8, 7, 9}));
+}
+
 TEST(VerifyLoop, ATrueRevisitWithADriftedGraphIsAcceptedWithTheTruePose)
 {
   const Revisit r(CPose2D(0.4, -0.3, 5 * kDeg), 20.0, 11);  // 0.5 m, 5 deg off after 20 m

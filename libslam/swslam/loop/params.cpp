@@ -13,6 +13,8 @@ const common::ParamTable<LoopClosureParams>& LoopClosureParams::table()
           .flag("enabled", &P::enabled, "look for loops at each new node", Tier::User)
           .real("max_distance", &P::max_distance, "m", atLeast(0),
                 "a candidate's graph pose is at most this far from the new node's...", Tier::User)
+          .real("max_search_radius", &P::max_search_radius, "m", atLeast(0),
+                "...or, if none is, 3 drift std over the path between them, up to this (0: never); its search spans as much")
           .integer("min_index_gap", &P::min_index_gap, "", atLeast(1), "...and it is at least this many nodes older")
           .integer("max_candidates", &P::max_candidates, "", atLeast(0), "candidates verified per new node, nearest first")
           .real("min_inlier_fraction", &P::min_inlier_fraction, "", between(0, 1),

@@ -12,7 +12,10 @@ struct LoopClosureParams
 {
   bool enabled = true;        ///< false: loopCandidates() returns none
   int min_index_gap = 30;     ///< a candidate is at least this many node ids older
-  double max_distance = 5.0;  ///< [m] ...and its graph (vehicle) pose at most this far
+  double max_distance = 5.0;  ///< [m] ...and its graph (vehicle) pose at most this far...
+  /** [m] ...or, when none is that near, 3 drift standard deviations over the path between
+   * the two, up to this (0: max_distance only); such a far candidate's search spans as much */
+  double max_search_radius = 25.0;
   int max_candidates = 3;     ///< verified per new node, nearest first
 
   // Acceptance of a verified candidate.
