@@ -185,11 +185,11 @@ LoopCheck verifyLoop(const graph::PoseGraph& graph, const LoopNode& old, const L
 
 std::vector<LoopCheck> checkLoops(const graph::PoseGraph& graph, const LoopNode& newest,
                                   const std::function<LoopNode(size_t)>& node,
+                                  const std::function<double(size_t)>& path_length,
                                   const LoopClosureParams& p, const plicp::PlicpParams& plicp,
                                   const std::optional<correlative::CorrelativeParams>& search)
 {
   std::vector<LoopCheck> checks;
-  const auto path_length = [&](size_t id) { return id == newest.id ? newest.path_length : node(id).path_length; };
   for (const size_t id : loopCandidates(graph, newest.id, p, path_length))
     checks.push_back(verifyLoop(graph, node(id), newest, p, plicp, search));
   return checks;

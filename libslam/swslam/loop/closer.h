@@ -93,10 +93,12 @@ LoopCheck verifyLoop(const graph::PoseGraph& graph, const LoopNode& old, const L
                      const LoopClosureParams& p, const plicp::PlicpParams& plicp,
                      const std::optional<correlative::CorrelativeParams>& search = std::nullopt);
 
-/** loopCandidates() then verifyLoop() on each; `node(id)` gives an older node's LoopNode.
+/** loopCandidates() (far candidates too when `path_length` is given) then verifyLoop() on
+ * each; `node(id)` gives a candidate's LoopNode with its scan, asked for the candidates only.
  * Returns every check (for logs); the accepted ones carry an edge. */
 std::vector<LoopCheck> checkLoops(const graph::PoseGraph& graph, const LoopNode& newest,
                                   const std::function<LoopNode(size_t)>& node,
+                                  const std::function<double(size_t)>& path_length,
                                   const LoopClosureParams& p, const plicp::PlicpParams& plicp,
                                   const std::optional<correlative::CorrelativeParams>& search = std::nullopt);
 

@@ -274,7 +274,7 @@ TEST(CheckLoops, VerifiesOnlyTheCandidates)
   const auto checks = checkLoops(g, r.new_node, [&](size_t id) {
     asked.push_back(id);
     return r.old_node;
-  }, LoopClosureParams(), plicp::PlicpParams());
+  }, nullptr, LoopClosureParams(), plicp::PlicpParams());
   EXPECT_EQ(asked, (std::vector<size_t>{0}));
   ASSERT_EQ(checks.size(), 1u);
   EXPECT_EQ(checks[0].verdict, Verdict::Accepted);

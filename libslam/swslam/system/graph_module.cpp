@@ -176,8 +176,9 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Co
 {
   if (!loop_params_.enabled) return 0;
   size_t correcting = 0;
+  const auto path_length = [this](size_t n) { return nodes_.at(n).path_length; };
   const auto checks = loop::checkLoops(
-      graph_, loopNode(id), [this](size_t n) { return loopNode(n); }, loop_params_, plicp_params_,
+      graph_, loopNode(id), [this](size_t n) { return loopNode(n); }, path_length, loop_params_, plicp_params_,
       search_params_);
   std::vector<graph::Constraint> verified;
   for (const loop::LoopCheck& check : checks)
@@ -186,8 +187,7 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Co
     if (check.edge) verified.push_back(*check.edge);
   }
   const auto corroborated = corroboration_.add(
-      id, verified, [this](size_t n) { return graph_.pose(n); },
-      [this](size_t n) { return nodes_.at(n).path_length; });
+      id, verified, [this](size_t n) { return graph_.pose(n); }, path_length);
   for (const graph::Constraint& e : corroborated)
   {
     std::lock_guard<std::mutex> lock(mutex_);
