@@ -1,6 +1,7 @@
 // A relative motion held for a different time at the same twist (se2_scaling.h).
 #include <swslam/geometry/se2_scaling.h>
 
+#include <swslam/geometry/expect_pose.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,16 +9,6 @@
 using namespace swslam;
 using namespace swslam::geometry;
 using mrpt::poses::CPose2D;
-
-namespace
-{
-void expectPose(const CPose2D& a, const CPose2D& b, double tol, const char* what)
-{
-  EXPECT_NEAR(a.x(), b.x(), tol) << what;
-  EXPECT_NEAR(a.y(), b.y(), tol) << what;
-  EXPECT_NEAR(std::remainder(a.phi() - b.phi(), 2 * M_PI), 0, tol) << what;
-}
-}  // namespace
 
 TEST(SE2Scaling, WholeMultiplesAreCompositions)
 {

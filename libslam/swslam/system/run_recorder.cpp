@@ -33,7 +33,10 @@ void RunRecorder::tracked(size_t index, double timestamp, const tracking::Tracki
   row.prior_decided = step.prior_decided;
   std::lock_guard<std::mutex> lock(mutex_);
   stats_.push_back(row);
-  trajectory_.push_back({row.timestamp, step.keyframe, step.relative.asTPose(), step.pose.asTPose()});
+  const Eigen::Matrix3d& info = step.relative_information;
+  trajectory_.push_back({row.timestamp, step.keyframe, step.relative.asTPose(), step.pose.asTPose(),
+                         {float(info(0, 0)), float(info(0, 1)), float(info(0, 2)), float(info(1, 1)),
+                          float(info(1, 2)), float(info(2, 2))}});
   if (step.new_keyframe) keyframe_times_.push_back(row.timestamp);
   status_.scans++;
   status_.nodes = nodes;
@@ -120,17 +123,28 @@ RunResults RunRecorder::results(graph::PoseGraph graph, size_t loops, size_t map
     row.active_sq_residuals = active;
   }
   r.trajectory.reserve(trajectory_.size());
-  for (const TrajectoryRecord& rec : trajectory_)
-  {
-    // A keyframe the graph has not received yet (threaded, mid-run): the tracked pose.
-    r.trajectory.push_back({rec.t, r.graph.hasNode(rec.keyframe)
-                                       ? r.graph.pose(rec.keyframe) + mrpt::poses::CPose2D(rec.relative)
-                                       : mrpt::poses::CPose2D(rec.tracked)});
-  }
+  for (const TrajectoryRecord& rec : trajectory_) r.trajectory.push_back({rec.t, place(rec, r.graph)});
   r.keyframes.reserve(keyframe_times_.size());
   for (size_t id = 0; id < keyframe_times_.size(); ++id)
     if (r.graph.hasNode(id)) r.keyframes.push_back({keyframe_times_[id], r.graph.pose(id)});
   return r;
+}
+
+mrpt::poses::CPose2D RunRecorder::place(const TrajectoryRecord& rec, const graph::PoseGraph& graph) const
+{
+  using mrpt::poses::CPose2D;
+  // A keyframe the graph has not received yet (threaded, mid-run): the tracked pose.
+  if (!graph.hasNode(rec.keyframe)) return CPose2D(rec.tracked);
+  const CPose2D a = graph.pose(rec.keyframe);
+  const size_t next = rec.keyframe + 1;
+  // After the last keyframe, or before one merged away: on the keyframe by the match alone.
+  if (next >= keyframe_times_.size() || !graph.hasNode(next)) return a + CPose2D(rec.relative);
+  const std::array<float, 6>& u = rec.information;
+  Eigen::Matrix3d info;
+  info << u[0], u[1], u[2], u[1], u[3], u[4], u[2], u[4], u[5];
+  const double t0 = keyframe_times_[rec.keyframe];
+  return a + tracking::placeBetweenKeyframes(graph.pose(next) - a, rec.t - t0, keyframe_times_[next] - t0,
+                                             CPose2D(rec.relative), info, placement_);
 }
 
 }  // namespace swslam::system

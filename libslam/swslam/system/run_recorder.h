@@ -8,9 +8,11 @@
 #include <swslam/system/graph_module.h>
 #include <swslam/system/scan_stats.h>
 #include <swslam/tracking/local_tracker.h>
+#include <swslam/tracking/placement.h>
 
 #include <mrpt/math/TPose2D.h>
 
+#include <array>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -31,7 +33,9 @@ struct SystemStatus
 /** Everything a run produced (copies, safe to use while the system keeps running). */
 struct RunResults
 {
-  std::vector<common::StampedPose> trajectory;  ///< every processed scan: keyframe pose (+) relative
+  /** Every processed scan: a keyframe's pose, and each scan after it placed between it and
+   * the next keyframe (tracking/placement.h). */
+  std::vector<common::StampedPose> trajectory;
   std::vector<common::StampedPose> keyframes;   ///< graph node poses, stamped with their scan's time
   graph::PoseGraph graph;
   std::vector<ScanStats> stats;
@@ -45,6 +49,9 @@ struct RunResults
 class RunRecorder
 {
  public:
+  /** Scans between keyframes are placed with `placement`. */
+  explicit RunRecorder(const tracking::PlacementModel& placement) : placement_(placement) {}
+
   /** A resumed session's nodes, stamped (before any scan): keyframes.tum lists them first. */
   void resumed(const std::vector<double>& node_times);
   /** A scan skipped where it entered. */
@@ -72,7 +79,13 @@ class RunRecorder
     size_t keyframe;
     mrpt::math::TPose2D relative;
     mrpt::math::TPose2D tracked;  ///< the pose tracking gave it at the time
+    /** The upper triangle of the information of `relative` (row by row; zero: no match). */
+    std::array<float, 6> information;
   };
+  /** Where `rec` lies on `graph`'s optimized keyframes. */
+  mrpt::poses::CPose2D place(const TrajectoryRecord& rec, const graph::PoseGraph& graph) const;
+
+  const tracking::PlacementModel placement_;
 
   mutable std::mutex mutex_;
   std::vector<ScanStats> stats_;              ///< by scan index, guarded by mutex_

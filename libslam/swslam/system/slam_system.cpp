@@ -28,6 +28,8 @@ SlamSystem::SlamSystem(const SystemParams& params, RunMode mode)
       tracker_(params.tracking, params.plicp, params.correlative),
       graph_(params.graph_optimizer, params.loop_closure, params.plicp, params.correlative),
       map_(params.map),
+      recorder_(tracking::PlacementModel{params.tracking.placement_acceleration,
+                                         params.tracking.placement_angular_acceleration}),
       scan_queue_(static_cast<size_t>(params.system.input_queue_capacity)),
       gate_(params.system)
 {

@@ -1,5 +1,6 @@
 #include <swslam/tracking/local_tracker.h>
 
+#include <swslam/geometry/information.h>
 #include <swslam/geometry/sensor_frame.h>
 #include <swslam/tracking/dense_edges.h>
 #include <swslam/tracking/motion_prediction.h>
@@ -67,7 +68,11 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   step.match = m.match;
   CPose2D rel = predicted.relative;
   if (step.match.ok())
+  {
     rel = geometry::vehicleMotion(last.sensor_pose, step.match.pose);
+    step.relative_information = geometry::informationFromCovariance(
+        geometry::vehicleMotionCovariance(last.sensor_pose, step.match.pose, step.match.covariance));
+  }
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   advance(rel, raw, predicted);
@@ -117,6 +122,7 @@ void LocalTracker::addNode(const PreparedScan& scan, TrackingStep& step)
   step.new_keyframe = true;
   step.keyframe = node.id;
   step.relative = CPose2D();
+  step.relative_information.setZero();
   relative_ = CPose2D();
 }
 

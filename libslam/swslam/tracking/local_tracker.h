@@ -44,6 +44,9 @@ struct TrackingStep
   mrpt::poses::CPose2D pose;      ///< vehicle pose of this scan in the map frame
   size_t keyframe = 0;            ///< the keyframe `relative` refers to (the new one if made)
   mrpt::poses::CPose2D relative;  ///< vehicle pose relative to that keyframe
+  /** Information of `relative` from the match (vehicle frame, [x, y, theta]); zero when the
+   * prediction placed the scan, and for a new keyframe (exactly on itself). */
+  Eigen::Matrix3d relative_information = Eigen::Matrix3d::Zero();
   plicp::MatchResult match;  ///< the match against the keyframe, in its sensor frame (status says if it failed)
   TrackingSource source = TrackingSource::First;
   bool new_keyframe = false;

@@ -66,7 +66,11 @@ const common::ParamTable<TrackingParams>& TrackingParams::table()
                 "steady-motion prior: the search's score lost at one sigma from the prediction (0: none)")
           .real("steady_sigma_min", &P::steady_sigma_min, "m", common::above(0), "least sigma of the steady-motion prior")
           .real("steady_min_step", &P::steady_min_step, "m", common::atLeast(0),
-                "the steady-motion prior applies while the last 3 steps average at least this");
+                "the steady-motion prior applies while the last 3 steps average at least this")
+          .real("placement_acceleration", &P::placement_acceleration, "m/s^2", common::above(0),
+                "scans between keyframes: the acceleration that takes them off constant motion between the two...")
+          .angle("placement_angular_acceleration_DEG", &P::placement_angular_acceleration, common::above(0),
+                 "...and the angular one, per s^2 (where its points inform, their match decides)");
   return t;
 }
 

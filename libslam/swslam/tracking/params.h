@@ -78,6 +78,10 @@ struct TrackingParams
   double steady_prior_cost = 0.002;  ///< score lost at one sigma (0: no such prior)
   double steady_sigma_min = 0.3;     ///< [m]
   double steady_min_step = 0.5;      ///< [m] per scan
+  // Scans between keyframes in the trajectory (placement.h): how far the vehicle's motion
+  // strays from constant velocity between two keyframes.
+  double placement_acceleration = 1.0;                         ///< [m/s^2]
+  double placement_angular_acceleration = mrpt::DEG2RAD(60.0);  ///< [rad/s^2]
 
   static const common::ParamTable<TrackingParams>& table();
 };
