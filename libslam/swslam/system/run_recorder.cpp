@@ -137,7 +137,8 @@ mrpt::poses::CPose2D RunRecorder::place(const TrajectoryRecord& rec, const graph
   if (!graph.hasNode(rec.keyframe)) return CPose2D(rec.tracked);
   const CPose2D a = graph.pose(rec.keyframe);
   const size_t next = rec.keyframe + 1;
-  // After the last keyframe, or before one merged away: on the keyframe by the match alone.
+  // After the last keyframe, or before one the graph has not received yet: the match alone. (A
+  // merged node keeps a pose, on its anchor.)
   if (next >= keyframe_times_.size() || !graph.hasNode(next)) return a + CPose2D(rec.relative);
   const std::array<float, 6>& u = rec.information;
   Eigen::Matrix3d info;
