@@ -21,6 +21,24 @@ namespace
 {
 /** A seed or a count: a whole number in [0, 1e9]. */
 const common::Range kCount = common::between(0, 1e9);
+
+/** A text key's parser from `parse`, which throws std::invalid_argument on bad text: its
+ * message follows the key's name. */
+template <class P, class T, class Parse>
+auto parsedBy(T P::*member, Parse parse)
+{
+  return [member, parse](P& p, const std::string& v) {
+    try
+    {
+      p.*member = parse(v);
+      return std::string();
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return std::string(": ") + e.what();
+    }
+  };
+}
 }  // namespace
 
 const common::ParamTable<WorldParams>& WorldParams::table()
@@ -84,17 +102,7 @@ const common::ParamTable<VehicleParams>& VehicleParams::table()
       common::ParamTable<P>("vehicle", "A smooth path through waypoints at constant speed.")
           .custom(
               "waypoints",
-              [](P& p, const std::string& v) {
-                try
-                {
-                  p.waypoints = parseWaypoints(v);
-                  return std::string();
-                }
-                catch (const std::invalid_argument& e)
-                {
-                  return std::string(": ") + e.what();
-                }
-              },
+              parsedBy(&P::waypoints, parseWaypoints),
               [](const P& p) { return formatWaypoints(p.waypoints); }, "'x y, x y, ...' [m]")
           .flag("closed", &P::closed, "the path returns to its first waypoint")
           .real("speed", &P::speed, "m/s", anyNumber(), "vehicle speed")
@@ -155,6 +163,18 @@ const common::ParamTable<ChangesParams>& ChangesParams::table()
   return t;
 }
 
+const common::ParamTable<BuildingParams>& BuildingParams::table()
+{
+  using P = BuildingParams;
+  static const auto t =
+      common::ParamTable<P>("building", "Walls that stop every ray (indoor runs).")
+          .custom(
+              "walls",
+              parsedBy(&P::walls, parseWalls),
+              [](const P& p) { return formatWalls(p.walls); }, "'x1 y1 x2 y2, ...' [m], one segment per wall");
+  return t;
+}
+
 namespace
 {
 /** Calls visit(table, parameters) for each section, in file order. */
@@ -189,6 +209,34 @@ std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text)
   return pts;
 }
 
+std::vector<BuildingParams::Wall> parseWalls(const std::string& text)
+{
+  std::vector<std::string> items;
+  mrpt::system::tokenize(text, ",;", items);
+  std::vector<BuildingParams::Wall> walls;
+  for (const auto& item : items)
+  {
+    std::istringstream ss(item);
+    double x1, y1, x2, y2;
+    std::string rest;
+    if (!(ss >> x1 >> y1 >> x2 >> y2) || (ss >> rest) || !std::isfinite(x1) || !std::isfinite(y1) ||
+        !std::isfinite(x2) || !std::isfinite(y2))
+      throw std::invalid_argument("wall '" + mrpt::system::trim(item) + "' is not 'x1 y1 x2 y2' (walls are 'x1 y1 x2 y2, ...')");
+    if (x1 == x2 && y1 == y2) throw std::invalid_argument("wall '" + mrpt::system::trim(item) + "' has no length");
+    walls.emplace_back(Eigen::Vector2d(x1, y1), Eigen::Vector2d(x2, y2));
+  }
+  if (walls.empty()) throw std::invalid_argument("need at least one wall 'x1 y1 x2 y2, ...'");
+  return walls;
+}
+
+std::string formatWalls(const std::vector<BuildingParams::Wall>& walls)
+{
+  std::string s;
+  for (const auto& [a, b] : walls)
+    s += (s.empty() ? "" : ", ") + mrpt::format("%.15g %.15g %.15g %.15g", a.x(), a.y(), b.x(), b.y());
+  return s;
+}
+
 std::string formatWaypoints(const std::vector<Eigen::Vector2d>& pts)
 {
   std::string s;
@@ -201,6 +249,7 @@ std::string formatScenario(const Scenario& sc)
   mrpt::config::CConfigFileMemory c;
   forEachSection(sc, [&](const auto& table, const auto& p) { table.save(p, c); });
   if (sc.changes.any()) ChangesParams::table().save(sc.changes, c);
+  if (sc.building.any()) BuildingParams::table().save(sc.building, c);
   std::string text;
   c.getContent(text);
   return text;
@@ -214,7 +263,7 @@ Scenario loadScenario(const std::string& path)
   {
     const auto file = common::readIniFile(path);
     const mrpt::config::CConfigFileBase& cfg = *file;
-    common::checkKnownSections(cfg, {"world", "terrain", "vegetation", "vehicle", "sensor", "odometry", "changes"});
+    common::checkKnownSections(cfg, {"world", "terrain", "vegetation", "vehicle", "sensor", "odometry", "changes", "building"});
     Scenario sc;
     sc.name = std::filesystem::path(path).stem().string();
     // A misspelled key is named as such first, then a missing one.
@@ -227,6 +276,11 @@ Scenario loadScenario(const std::string& path)
     {
       ChangesParams::table().load(cfg, sc.changes);
       ChangesParams::table().requireAll(cfg);
+    }
+    if (cfg.sectionExists("building"))
+    {
+      BuildingParams::table().load(cfg, sc.building);
+      BuildingParams::table().requireAll(cfg);
     }
     validateScenario(sc);
     return sc;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace swslam::sim
@@ -121,6 +122,17 @@ struct ChangesParams
   static const common::ParamTable<ChangesParams>& table();
 };
 
+/** [building] (optional section) Walls: straight segments that stop every ray, for indoor
+ * runs (a building's corridors and rooms). */
+struct BuildingParams
+{
+  using Wall = std::pair<Eigen::Vector2d, Eigen::Vector2d>;
+  std::vector<Wall> walls;
+
+  bool any() const { return !walls.empty(); }
+  static const common::ParamTable<BuildingParams>& table();
+};
+
 struct Scenario
 {
   std::string name;  ///< output file stem
@@ -131,6 +143,7 @@ struct Scenario
   VegetationParams vegetation;
   OdometryParams odometry;
   ChangesParams changes;  ///< none unless the file has a [changes] section
+  BuildingParams building;  ///< no walls unless the file has a [building] section
 };
 
 /** Reads and checks a scenario file; the name is the file's stem. Throws
@@ -141,6 +154,11 @@ Scenario loadScenario(const std::string& path);
 /** The scenario as .ini text that loadScenario() reads back (the name is not stored). */
 std::string formatScenario(const Scenario& s);
 
+
+/** Parses "x1 y1 x2 y2, ..." (at least one wall, none of zero length). Throws
+ * std::invalid_argument. */
+std::vector<BuildingParams::Wall> parseWalls(const std::string& text);
+std::string formatWalls(const std::vector<BuildingParams::Wall>& walls);
 
 /** Parses "x y, x y, ..." (at least two points). Throws std::invalid_argument. */
 std::vector<Eigen::Vector2d> parseWaypoints(const std::string& text);

@@ -80,6 +80,12 @@ void validateScenario(const Scenario& sc)
   require(s.dropout_prob >= 0 && s.dropout_prob < 1, "sensor", "dropout_prob",
           "must be a probability in [0, 1)");
 
+  const double hx = 0.5 * w.size_x, hy = 0.5 * w.size_y;
+  for (const auto& [a, b] : sc.building.walls)
+    for (const Eigen::Vector2d& p : {a, b})
+      require(std::abs(p.x()) <= hx && std::abs(p.y()) <= hy, "building", "walls",
+              mrpt::format("end (%g, %g) lies outside the world (size_x, size_y)", p.x(), p.y()));
+
   const auto& o = sc.odometry;
   require(o.speed_noise_std >= 0 && o.speed_noise_std < 1, "odometry", "speed_noise_std",
           "must be in [0, 1)");

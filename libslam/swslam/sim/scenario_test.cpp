@@ -6,6 +6,7 @@
 #include <swslam/sim/simulator.h>
 #include <swslam/sim/terrain.h>
 #include <swslam/sim/vehicle.h>
+#include <swslam/sim/world.h>
 
 #include <gtest/gtest.h>
 
@@ -58,6 +59,29 @@ TEST(SimScenario, RoundTripThroughIniText)
   EXPECT_EQ(formatScenario(b), formatScenario(a));
 }
 
+TEST(SimScenario, WallsRoundTripAndStopRays)
+{
+  Scenario a = swslam::test::smallScenario();
+  a.building.walls = {{{-10, 5}, {10, 5}}, {{-3.5, -20}, {-3.5, -15.25}}};
+  const std::string file = swslam::test::tempDir("sim_scenario_walls") + "/walls.ini";
+  swslam::test::writeText(file, formatScenario(a));
+  const Scenario b = loadScenario(file);
+  ASSERT_EQ(b.building.walls.size(), 2u);
+  EXPECT_EQ(b.building.walls[1].second, Eigen::Vector2d(-3.5, -15.25));
+  EXPECT_EQ(formatScenario(b), formatScenario(a));
+  // A ray from the path straight up (+y) stops on the first wall, from either side.
+  const VehiclePath path(b.vehicle.waypoints, b.vehicle.closed, b.vehicle.speed);
+  const World world = generateWorld(b, path);
+  Ray up;
+  up.origin = Eigen::Vector2d(0, -6);
+  up.dir = Eigen::Vector2d(0, 1);
+  EXPECT_NEAR(castBruteForce(world, up, 100), 11.0, 1e-9);
+  Ray down;
+  down.origin = Eigen::Vector2d(0, 8);
+  down.dir = Eigen::Vector2d(0, -1);
+  EXPECT_NEAR(castBruteForce(world, down, 100), 3.0, 1e-9);
+}
+
 TEST(SimScenario, EveryShippedScenarioLoadsAndFitsItsWorld)
 {
   size_t n = 0;
@@ -97,6 +121,11 @@ TEST(SimScenario, BadKeysAndValuesNameTheKeyAndWriteNothing)
       {"size_x *= *[^\n]*", "size_x = 10", "leaves the world"},
       {"waypoints *= *[^\n]*", "waypoints = -6 -8, 0 0, 6 8, 12 16", "onto land"},
       {"waypoints *= *[^\n]*", "waypoints = -6 -8, 0 -6, -5 -7", "max_turn_rate_DEG"},
+      {"\\[odometry\\]", "[building]\nwalls = 1 2 3\n[odometry]", "wall '1 2 3' is not 'x1 y1 x2 y2'"},
+      {"\\[odometry\\]", "[building]\nwalls = 1 2 1 2\n[odometry]", "wall '1 2 1 2' has no length"},
+      {"\\[odometry\\]", "[building]\nwalls = 0 20 0 40\n[odometry]", "[building] walls end (0, 40) lies outside"},
+      {"\\[odometry\\]", "[building]\n[odometry]", "missing key [building] walls"},
+      {"\\[odometry\\]", "[building]\nwalls = -2 -6 2 -6\n[odometry]", "within 0.5 m of the wall (-2, -6)-(2, -6)"},
   };
   for (const auto& c : cases)
   {

@@ -16,6 +16,14 @@ using Vec = Eigen::Vector2d;
 constexpr double kShoreVertexSpacing = 1.0;  // [m]
 constexpr double kShoreJitter = 0.3;         // [m] small-scale irregularity of the shore
 constexpr double kWaterMargin = 1.0;         // [m] the path stays this far from the shore
+constexpr double kWallMargin = 0.5;          // [m] and this far from a wall
+
+double distanceToSegment(const Vec& p, const Vec& a, const Vec& b)
+{
+  const Vec d = b - a;
+  const double s = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return (p - (a + s * d)).norm();
+}
 
 class Generator
 {
@@ -41,6 +49,7 @@ class Generator
       shore_length_ = addShore(world_.lake, true);
       for (const auto& island : world_.islands) shore_length_ += addShore(island, false);
     }
+    for (const auto& [a, b] : sc_.building.walls) world_.add(Shape::segment(ShapeKind::Wall, a, b));
     addRocks();
     for (int i = 0; i < 4; i++)
     {
@@ -285,6 +294,11 @@ void checkPathFits(const Scenario& sc, const World& world, const VehiclePath& pa
           "[%.1f, %.1f] x [%.1f, %.1f] ([world] size_x, size_y), less %.1f m for the sensor "
           "mounting",
           p.x(), p.y(), b.min_x, b.max_x, b.min_y, b.max_y, m));
+    for (const auto& [wa, wb] : sc.building.walls)
+      if (distanceToSegment(p, wa, wb) < kWallMargin)
+        throw std::invalid_argument(mrpt::format(
+            "[vehicle] waypoints: the path comes within %.1f m of the wall (%g, %g)-(%g, %g) at (%.1f, %.1f)",
+            kWallMargin, wa.x(), wa.y(), wb.x(), wb.y(), p.x(), p.y()));
     if (!world.has_water) continue;
     bool afloat = world.lake.radialOffset(p) < -kWaterMargin;
     for (const auto& island : world.islands) afloat = afloat && island.radialOffset(p) > kWaterMargin;

@@ -20,6 +20,7 @@ enum class ShapeKind : uint8_t
   Trunk,
   Bush,   ///< one leaf cluster of a bush
   Reed,   ///< one reed stem
+  Wall,   ///< a building's wall segment (scenario [building])
 };
 
 /** A circle (`radius` > 0, center `a`) or a segment (`radius` == 0, from `a` to `b`). */

@@ -70,6 +70,7 @@ TColor colorOf(ShapeKind k)
     case ShapeKind::Trunk: return {20, 90, 20};
     case ShapeKind::Bush: return {110, 190, 80};
     case ShapeKind::Reed: return {150, 150, 40};
+    case ShapeKind::Wall: return {60, 60, 60};
   }
   return {0, 0, 0};
 }
