@@ -24,6 +24,8 @@ CPose2D placeBetweenKeyframes(const CPose2D& b_from_a, double t, double interval
   const Eigen::Matrix3d prior = Eigen::Vector3d(1 / (sxy * sxy), 1 / (sxy * sxy), 1 / (sth * sth)).asDiagonal();
   const Eigen::Vector3d offset(match.x() - interpolated.x(), match.y() - interpolated.y(),
                                geometry::wrapAngle(match.phi() - interpolated.phi()));
+  // A match whose information is not finite tells nothing: the interpolation alone.
+  if (!information.allFinite()) return interpolated;
   const Eigen::Vector3d step = (information + prior).ldlt().solve(information * offset);
   return CPose2D(interpolated.x() + step.x(), interpolated.y() + step.y(),
                  geometry::wrapAngle(interpolated.phi() + step.z()));

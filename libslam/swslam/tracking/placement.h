@@ -25,7 +25,8 @@ struct PlacementModel
  * scan's match to a gave `match` with `information` (its inverse covariance in a's vehicle
  * frame, [x, y, theta]; zero: the scan was not matched). The information-weighted mean, to
  * first order, of the match and the interpolation exp(t / T log(b_from_a)), whose standard
- * deviations follow `model`. t outside (0, interval) or interval <= 0: the match. */
+ * deviations follow `model` (an information that is not finite counts as none). t outside
+ * (0, interval) or interval <= 0: the match. */
 mrpt::poses::CPose2D placeBetweenKeyframes(const mrpt::poses::CPose2D& b_from_a, double t, double interval,
                                            const mrpt::poses::CPose2D& match, const Eigen::Matrix3d& information,
                                            const PlacementModel& model);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace swslam;
@@ -44,6 +45,18 @@ TEST(Placement, AnUnmatchedScanLiesOnTheKeyframesMotionAtConstantVelocity)
   for (double t : {0.01, 0.1, 0.25, 0.39})
     expectPose(placeBetweenKeyframes(b, t, 0.4, match, Eigen::Matrix3d::Zero(), PlacementModel{}),
                geometry::scaledMotion(b, t / 0.4), 1e-12, "no information");
+}
+
+TEST(Placement, AnInformationThatIsNotFiniteCountsAsNone)
+{
+  const CPose2D b(0.8, 0.1, 0.3), match(0.05, -0.2, 0.4);
+  Eigen::Matrix3d info = Eigen::Matrix3d::Identity();
+  info(0, 1) = info(1, 0) = std::numeric_limits<double>::quiet_NaN();
+  expectPose(placeBetweenKeyframes(b, 0.1, 0.4, match, info, PlacementModel{}), geometry::scaledMotion(b, 0.25), 1e-12,
+             "NaN");
+  info = Eigen::Vector3d(std::numeric_limits<double>::infinity(), 1, 1).asDiagonal();
+  expectPose(placeBetweenKeyframes(b, 0.1, 0.4, match, info, PlacementModel{}), geometry::scaledMotion(b, 0.25), 1e-12,
+             "infinite");
 }
 
 TEST(Placement, AConfidentMatchKeepsItsPose)
