@@ -2,6 +2,7 @@
 
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
+#include <mrpt/math/TSegment2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,13 +18,6 @@ constexpr double kShoreVertexSpacing = 1.0;  // [m]
 constexpr double kShoreJitter = 0.3;         // [m] small-scale irregularity of the shore
 constexpr double kWaterMargin = 1.0;         // [m] the path stays this far from the shore
 constexpr double kWallMargin = 0.5;          // [m] and this far from a wall
-
-double distanceToSegment(const Vec& p, const Vec& a, const Vec& b)
-{
-  const Vec d = b - a;
-  const double s = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-  return (p - (a + s * d)).norm();
-}
 
 class Generator
 {
@@ -295,7 +289,7 @@ void checkPathFits(const Scenario& sc, const World& world, const VehiclePath& pa
           "mounting",
           p.x(), p.y(), b.min_x, b.max_x, b.min_y, b.max_y, m));
     for (const auto& [wa, wb] : sc.building.walls)
-      if (distanceToSegment(p, wa, wb) < kWallMargin)
+      if (mrpt::math::TSegment2D({wa.x(), wa.y()}, {wb.x(), wb.y()}).distance({p.x(), p.y()}) < kWallMargin)
         throw std::invalid_argument(mrpt::format(
             "[vehicle] waypoints: the path comes within %.1f m of the wall (%g, %g)-(%g, %g) at (%.1f, %.1f)",
             kWallMargin, wa.x(), wa.y(), wb.x(), wb.y(), p.x(), p.y()));

@@ -68,18 +68,20 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   step.match = m.match;
   CPose2D rel = predicted.relative;
   if (step.match.ok())
-  {
     rel = geometry::vehicleMotion(last.sensor_pose, step.match.pose);
-    step.relative_information = geometry::informationFromCovariance(
-        geometry::vehicleMotionCovariance(last.sensor_pose, step.match.pose, step.match.covariance));
-  }
   else
     step.source = odometry_increment ? TrackingSource::Odometry : TrackingSource::ConstantMotion;
   advance(rel, raw, predicted);
   step.keyframe = last.id;
   step.relative = rel;
   step.pose = last.pose + rel;
-  if (makesNode(rel, step.match.ok())) addNode(scan, step);
+  // A new keyframe lies exactly on itself (its consecutive edge carries the match); a scan
+  // between keyframes keeps its match's information for its place in the trajectory.
+  if (makesNode(rel, step.match.ok()))
+    addNode(scan, step);
+  else if (step.match.ok())
+    step.relative_information = geometry::informationFromCovariance(
+        geometry::vehicleMotionCovariance(last.sensor_pose, step.match.pose, step.match.covariance));
   return step;
 }
 
@@ -122,7 +124,6 @@ void LocalTracker::addNode(const PreparedScan& scan, TrackingStep& step)
   step.new_keyframe = true;
   step.keyframe = node.id;
   step.relative = CPose2D();
-  step.relative_information.setZero();
   relative_ = CPose2D();
 }
 
