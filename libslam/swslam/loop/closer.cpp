@@ -148,7 +148,7 @@ LoopCheck verifyLoop(const graph::PoseGraph& graph, const LoopNode& old, const L
   c.from = old.id;
   c.to = newest.id;
   const CPose2D& from_pose = graph.pose(old.id);  // both throw for a missing node
-  const CPose2D to_pose = newest.pose.value_or(graph.pose(newest.id));
+  const CPose2D& to_pose = graph.pose(newest.id);
   c.distance = (to_pose.translation() - from_pose.translation()).norm();
   c.path_gap = std::abs(newest.path_length - old.path_length);
   c.predicted = to_pose - from_pose;

@@ -31,9 +31,6 @@ struct LoopNode
   /** The node's scan, sensor frame; its Scan::sensor_pose is the mounting on the vehicle. */
   std::shared_ptr<const plicp::ReferenceScan> scan;
   double path_length = 0;  ///< [m] distance travelled from the first node to this one
-  /** Where verifyLoop takes the node to be instead of its graph pose (the new node under a
-   * rival, loop/rival.h); none: the graph's. */
-  std::optional<mrpt::poses::CPose2D> pose;
 };
 
 /** The outcome of verifying one candidate pair. */
@@ -85,7 +82,7 @@ double loopMahalanobis2(const mrpt::poses::CPose2D& predicted, const mrpt::poses
                         const Eigen::Matrix3d& measured_cov, const Eigen::Matrix3d& drift_cov);
 
 /** Verifies one pair: PLICP of `newest`'s scan against `old`'s, starting from the graph's
- * relative vehicle pose (newest.pose in place of newest's graph pose when given) carried into the sensor frame; then the overlap check and the gate on
+ * relative vehicle pose carried into the sensor frame; then the overlap check and the gate on
  * the vehicle-frame result. Scans from different sensors give MatchFailed (InvalidInput).
  * With `search` (and search->enabled), a match that failed or overlaps too little is redone
  * from the best pose of a correlative search on the old scan around the guess, within

@@ -5,8 +5,6 @@
 
 #include <mrpt/system/CTimeLogger.h>
 
-#include <Eigen/LU>
-
 #include <algorithm>
 #include <set>
 #include <stdexcept>
@@ -107,16 +105,9 @@ GraphStep GraphModule::addNode(const NewNode& node)
   }
   nodes_.push_back(ln);
 
-  if (node.rival && loop_params_.enabled)
-  {
-    if (rivals_.size() == kMaxRivals) rivals_.pop_front();
-    rivals_.emplace_back(Rival{*node.rival, loop::LoopCorroboration(loop_params_)});
-  }
-
   std::vector<graph::Constraint> loops;
   const size_t correcting = closeLoops(id, step, loops);
-  if (weighRivals(id, loops, step)) schedule_.ranFull(id);
-  optimize(step.rival_taken || schedule_.fullNow(id, correcting), step);
+  optimize(schedule_.fullNow(id, correcting), step);
   step.insert = MapInsert{node.scan, id, node.observation,
                           step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
   if (!loops.empty() && graph_params_.max_nodes_per_area > 0) loops_of_window_.emplace(id, std::move(loops));
@@ -216,75 +207,6 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Co
     }
   }
   return correcting;
-}
-
-bool GraphModule::weighRivals(size_t id, const std::vector<graph::Constraint>& accepted, GraphStep& step)
-{
-  // A loop across a rival's node that the graph accepted as it is confirms tracking's choice.
-  rivals_.remove_if([&](const Rival& r) {
-    return std::any_of(accepted.begin(), accepted.end(),
-                       [&](const graph::Constraint& e) { return loop::spans(e.from, e.to, r.edge.to); });
-  });
-  const auto path_length = [this](size_t n) { return nodes_.at(n).path_length; };
-  const auto pose = [this](size_t n) { return graph_.pose(n); };
-  for (auto r = rivals_.begin(); r != rivals_.end(); ++r)
-  {
-    if (r->edge.to >= id) continue;
-    const CPose2D motion = loop::rivalMotion(graph_.pose(r->edge.from), graph_.pose(r->edge.to), r->edge.z);
-    loop::LoopNode here = loopNode(id);
-    here.pose = motion + graph_.pose(id);
-    std::vector<graph::Constraint> verified;
-    for (const size_t old : loop::rivalCandidates(graph_, r->edge.to, id, *here.pose, loop_params_))
-    {
-      const loop::LoopCheck check = loop::verifyLoop(graph_, loopNode(old), here, loop_params_, plicp_params_, search_params_);
-      step.loops_checked++;
-      if (!check.edge) continue;
-      // Evidence for the rival only if the graph as it is would not take the loop too.
-      const double now = loop::loopMahalanobis2(graph_.pose(id) - graph_.pose(old), check.edge->z,
-                                                check.edge->information.inverse(),
-                                                loop::driftCovariance(check.path_gap, loop_params_));
-      if (!(now <= loop_params_.chi2_gate)) verified.push_back(*check.edge);
-    }
-    // The stretches the corroboration compares lie on one side of the rival's node each: the
-    // same under either choice.
-    const auto agreed = r->corroboration.add(id, verified, pose, path_length);
-    if (agreed.empty()) continue;
-    const graph::Constraint rival = r->edge;
-    rivals_.erase(r);
-    takeRival(rival, agreed, step);
-    return true;
-  }
-  return false;
-}
-
-void GraphModule::takeRival(const graph::Constraint& rival, const std::vector<graph::Constraint>& loops, GraphStep& step)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  const size_t node = rival.to;
-  const CPose2D motion = loop::rivalMotion(graph_.pose(rival.from), graph_.pose(node), rival.z);
-  for (size_t k = graph_.edgeCount(); k-- > 0;)
-  {
-    const graph::PoseGraph::Edge& e = graph_.edge(k);
-    if (e.kind != graph::EdgeKind::Loop && loop::spans(e.from, e.to, node)) graph_.removeEdge(k);
-  }
-  for (const auto n : graph_.nodeIds())
-    if (n >= node && !graph_.isMerged(n)) graph_.setPose(n, motion + graph_.pose(n));
-  for (const auto n : graph_.nodeIds())
-    if (graph_.isAnchor(n)) graph_.placeMergedInto(n);
-  addEdge(rival, step);
-  for (const graph::Constraint& e : loops)
-  {
-    const size_t before = step.edges_rejected;
-    addEdge(e, step);
-    if (step.edges_rejected == before)
-    {
-      step.loops_accepted++;
-      loops_++;
-    }
-  }
-  // Loops verified under the old choice that wait for a partner would now pull the other way.
-  corroboration_.clear();
-  step.rival_taken = true;
 }
 
 namespace

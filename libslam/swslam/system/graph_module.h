@@ -16,12 +16,10 @@
 #include <swslam/loop/closer.h>
 #include <swslam/loop/corroboration.h>
 #include <swslam/loop/final_refinement_params.h>
-#include <swslam/loop/rival.h>
 #include <swslam/plicp/reference_store.h>
 #include <swslam/system/full_optimization_schedule.h>
 #include <swslam/system/messages.h>
 
-#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -41,7 +39,6 @@ struct GraphStep
   size_t scan = 0;
   size_t node = 0;
   size_t loops_checked = 0, loops_accepted = 0;
-  bool rival_taken = false;  ///< a rival of tracking's was taken (GraphModule::takeRival)
   size_t pairs_refined = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
   bool full = false;          ///< the whole graph was optimized
@@ -100,15 +97,6 @@ class GraphModule
    * its loops says so: held there, its scan released and removed from the map (step.reinsert). */
   void mergeIfRedundant(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
-  /** The rivals (loop/rival.h) after node `id`'s loops: those a loop `accepted` now across
-   * their node confirms are closed; under each other one, node `id`'s loops to the nodes
-   * before the rival's node are looked for, and kept when the graph as it is rejects them.
-   * Once two agree (LoopCorroboration), takeRival. Returns whether one was taken. */
-  bool weighRivals(size_t id, const std::vector<graph::Constraint>& accepted, GraphStep& step);
-  /** The graph takes the rival: the edges across its node from the chain (consecutive, dense,
-   * priors) go, its node and every later one move by rivalMotion, and the rival and `loops`
-   * are added. */
-  void takeRival(const graph::Constraint& rival, const std::vector<graph::Constraint>& loops, GraphStep& step);
   /** Node `n` for loop closure, with its scan (rebuilt by the store if not kept). */
   loop::LoopNode loopNode(size_t n) const;
 
@@ -131,16 +119,6 @@ class GraphModule
   /** The loops accepted at each node still in the sliding window (max_nodes_per_area > 0): its
    * merge is decided as it leaves the window. Only the owning thread. */
   std::map<size_t, std::vector<graph::Constraint>> loops_of_window_;
-  /** Decisions of tracking kept open: a node's rival consecutive edge and the loops verified
-   * under it, waiting for a second; at most kMaxRivals, the oldest dropped. Only the owning
-   * thread. */
-  struct Rival
-  {
-    graph::Constraint edge;
-    loop::LoopCorroboration corroboration;
-  };
-  std::list<Rival> rivals_;
-  static constexpr size_t kMaxRivals = 8;
 };
 
 }  // namespace swslam::system

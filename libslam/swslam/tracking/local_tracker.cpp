@@ -76,19 +76,9 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   step.relative = rel;
   step.pose = last.pose + rel;
   // A new keyframe lies exactly on itself (its consecutive edge carries the match); a scan
-  // between keyframes keeps its match's information for its place in the trajectory. A scan
-  // with a rival is a node, so that the graph holds the decision on its consecutive edge.
-  const bool node = makesNode(rel, step.match.ok());
-  const bool rival = m.rival && step.match.ok();
-  if (node || rival)
-  {
+  // between keyframes keeps its match's information for its place in the trajectory.
+  if (makesNode(rel, step.match.ok()))
     addNode(scan, step);
-    if (rival)
-    {
-      step.rival = consecutiveEdge(keyframes_[step.keyframe - 1], keyframes_[step.keyframe], *m.rival, tracking_);
-      step.ambiguous++;
-    }
-  }
   else if (step.match.ok())
     step.relative_information = geometry::informationFromCovariance(
         geometry::vehicleMotionCovariance(last.sensor_pose, step.match.pose, step.match.covariance));

@@ -51,9 +51,6 @@ struct TrackingStep
   TrackingSource source = TrackingSource::First;
   bool new_keyframe = false;
   std::vector<graph::Constraint> edges;  ///< the new node's edges
-  /** The new node's consecutive edge had the search chosen its rival peak (ScanMatch::rival;
-   * a scan with a rival always makes a node): the graph keeps the decision open. */
-  std::optional<graph::Constraint> rival;
   size_t dense_matches = 0;        ///< dense-neighbour matches tried for the new node
   bool searched = false;           ///< the correlative search ran (source says if it won)
   double match_time = 0;           ///< [s] spent matching against the keyframe (search included)

@@ -54,8 +54,6 @@ const common::ParamTable<TrackingParams>& TrackingParams::table()
                    "the search's score grid holds the points of the last this many keyframes")
           .real("min_score_gain", &P::min_score_gain, "", common::atLeast(0),
                 "the searched match replaces the first only with an objective this much higher")
-          .real("rival_margin", &P::rival_margin, "", common::atLeast(0),
-                "a second peak of the search within this of the kept match's objective is kept as the node's rival (0: never)")
           .real("common_points_fraction", &P::common_points_fraction, "", common::between(0, 1),
                 "compare the two matches on the points that can tell them apart when this fraction can (0: on all)")
           .real("surface_goes_on_ratio", &P::surface_goes_on_ratio, "", common::atLeast(0),

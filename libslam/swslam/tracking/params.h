@@ -56,9 +56,6 @@ struct TrackingParams
   int submap_keyframes = 5;  ///< the search's score grid holds the points of the last this many keyframes
   // Which of the first and the searched match is kept.
   double min_score_gain = 0.02;  ///< the searched match replaces the first only with an objective this much higher
-  /** a second peak of the search beyond min_score_gain but within this of the kept match's
-   * objective is the node's rival: the decision is kept open for the graph (0: never) */
-  double rival_margin = 0.1;
   /** the two matches are compared on the points that can tell them apart (correlative::
    * commonScores), when at least this fraction of the points can; else on all the points
    * (0: always on all) */

@@ -164,36 +164,23 @@ ScanMatch ScanMatcher::match(const Submap& submap, const PreparedScan& scan, con
   }
   out.match = s.match;
   out.replaced = s.replaced;
-  if (s.match.ok()) secondPeak(submap, scan, prediction, s.match, out);
+  if (s.match.ok()) out.second_peak = secondPeak(submap, scan, prediction, s.match);
   return out;
 }
 
-void ScanMatcher::secondPeak(const Submap& submap, const PreparedScan& scan, const Prediction& prediction,
-                             const plicp::MatchResult& m, ScanMatch& out) const
+std::optional<Eigen::Vector3d> ScanMatcher::secondPeak(const Submap& submap, const PreparedScan& scan,
+                                                       const Prediction& prediction, const plicp::MatchResult& m) const
 {
   correlative::SearchWindow w = correlative::searchWindow(search_, prediction.guess);
   w.cost_per_m2 = prediction.cost_per_m2;
   const Eigen::Vector3d chosen = vec(m.pose);
-  const double radius = correlative::peakRadius(search_.sigma, search_.resolution);
-  const auto peak = correlative::secondPeak(submap.pyramid(search_), scan.searchPoints(), w, chosen, radius,
+  const auto peak = correlative::secondPeak(submap.pyramid(search_), scan.searchPoints(), w, chosen,
+                                            correlative::peakRadius(search_.sigma, search_.resolution),
                                             search_.min_score, tracking_.min_score_gain);
-  if (!peak) return;
-  if (peak->similar)
-  {
-    Eigen::Vector3d d = peak->peak.pose - chosen;
-    d.z() = std::remainder(d.z(), 2 * M_PI);
-    out.second_peak = d;
-    return;
-  }
-  if (!(peak->peak.objective >= peak->chosen_objective - tracking_.rival_margin)) return;
-  const Eigen::Vector3d& p = peak->peak.pose;
-  const plicp::MatchResult rival = plicp::matchScans(submap.reference(), scan.scan(), CPose2D(p.x(), p.y(), p.z()), plicp_);
-  out.iterations += rival.iterations;
-  // A rival that PLICP brought back to the kept match's peak is none.
-  const Eigen::Vector3d r = vec(rival.pose);
-  const double apart = (r.head<2>() - chosen.head<2>()).norm() + scan.rotationLength() * angleDiff(r.z(), chosen.z());
-  if (rival.ok() && rival.inliers >= tracking_.searched_min_inlier_fraction * rival.cur_valid_rays && apart > radius)
-    out.rival = rival;
+  if (!peak || !peak->similar) return std::nullopt;
+  Eigen::Vector3d d = peak->peak.pose - chosen;
+  d.z() = std::remainder(d.z(), 2 * M_PI);
+  return d;
 }
 
 }  // namespace swslam::tracking

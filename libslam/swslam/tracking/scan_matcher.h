@@ -94,11 +94,6 @@ struct ScanMatch
   /** A second peak of the search's objective of similar height, away from the kept match's
    * own: its offset from the match (sensor frame [x, y, theta]). */
   std::optional<Eigen::Vector3d> second_peak;
-  /** A second peak of the search less close than that (beyond min_score_gain, within
-   * rival_margin), away from the kept match's peak after PLICP from it: the match the scan
-   * would have had, had the search chosen otherwise (sensor frame). The decision is kept
-   * open: the graph module takes it if loops agree with it (doc/tracking.md, "Rivals"). */
-  std::optional<plicp::MatchResult> rival;
   int iterations = 0;  ///< PLICP iterations of every run
 };
 
@@ -118,10 +113,10 @@ class ScanMatcher
   ScanMatch match(const Submap& submap, const PreparedScan& scan, const Prediction& prediction);
 
  private:
-  /** After a search: the kept match `m`'s second peak (`out.second_peak` when of similar
-   * height, correlative/peaks.h), or its rival (`out.rival`) when within rival_margin. */
-  void secondPeak(const Submap& submap, const PreparedScan& scan, const Prediction& prediction,
-                  const plicp::MatchResult& m, ScanMatch& out) const;
+  /** After a search: a second peak of the search's objective of similar height, away from the
+   * match's own (correlative/peaks.h). */
+  std::optional<Eigen::Vector3d> secondPeak(const Submap& submap, const PreparedScan& scan,
+                                            const Prediction& prediction, const plicp::MatchResult& m) const;
 
   TrackingParams tracking_;
   plicp::PlicpParams plicp_;
