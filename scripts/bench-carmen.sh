@@ -8,6 +8,11 @@
 # a check that the first table is not one lucky sequence of them. Last, each log started a
 # quarter, half and three quarters of the way through (the scans before dropped): how a run
 # starts while moving, without a motion to predict from.
+# Per run also what the scans allow (swslam-eval laser-optimum, doc/evaluation.md): `support`,
+# their own optimum started at the reference, its distance from it; `target`, the larger of
+# 0.3 m and support + 0.2 m, and whether the ATE meets it; `own-basin`, their optimum started
+# at the run's result, its distance from the run / its ATE against the reference (a run far off
+# whose own result the scans hold as well sits in a basin they do not contradict).
 # Usage: scripts/bench-carmen.sh [CARMEN_DIR] [OUT_DIR]   (defaults ../shared/datasets,
 # out/bench-carmen); swslam's outputs go to OUT_DIR/<log>/, OUT_DIR/<log>-reversed/ and
 # OUT_DIR/<log>-from-<scan>/. SWSLAM_BUILD=DIR runs another build's programs, with the
@@ -31,10 +36,26 @@ run() {  # name carmen-log
     --no-render > /dev/null 2>&1 || true
   local s=$out/$name/summary.md
   if [[ ! -f $s ]]; then echo "$name: swslam failed (see: $bin/swslam -c $cfg -i $log -o $out/$name -d --no-odometry)"; return; fi
-  printf "%-28s %-10s %-7s %-24s %-9s %-9s %-9s\n" "$name" "$(field 'ATE (rmse)' "$s")" \
+  local ate support own own_ate target ok
+  ate=$(field 'ATE (rmse)' "$s" | awk '{print $1}')
+  support=$(optimum "$out/$name.gt.tum" "$out/$name.rawlog")
+  own=$(optimum "$out/$name/trajectory.tum" "$out/$name.rawlog" "$out/$name/own-optimum.tum")
+  own_ate=$("$bin/swslam-eval" ate "$out/$name/own-optimum.tum" "$out/$name.gt.tum" 2> /dev/null |
+    sed -n 's/^# ATE \([0-9.]*\) m.*/\1/p')
+  read -r target ok < <(awk -v a="$ate" -v s="$support" \
+    'BEGIN { if (s == "") { print "? ?"; exit }  # no optimum: no target
+            t = s + 0.2; if (t < 0.3) t = 0.3; printf "%.3f %s\n", t, (a + 0 <= t ? "yes" : "no") }')
+  printf "%-28s %-8s %-7s %-24s %-9s %-9s %-9s %-8s %-7s %-3s %s\n" "$name" "$ate" \
     "$(field 'Number of graph nodes' "$s")" "$(field 'Number of graph constraints' "$s")" \
     "$(field 'Scans tracked by fallback' "$s")" "$(field 'Ambiguous scans' "$s")" \
-    "$(field 'of them decided by the prediction' "$s")"
+    "$(field 'of them decided by the prediction' "$s")" "${support:-?}" "$target" "$ok" "${own:-?} / ${own_ate:-?}"
+}
+# The scans' own optimum started at a trajectory: its distance from it (m); written to OUT.tum
+# when given.
+optimum() {  # trajectory.tum log.rawlog [OUT.tum]
+  local args=(laser-optimum "$1" "$2" -c "$cfg")
+  [[ $# -lt 3 ]] || args+=(-o "$3")
+  "$bin/swslam-eval" "${args[@]}" 2> /dev/null | sed -n 's/.*optimum lies \([0-9.]*\) m.*/\1/p'
 }
 # A log played backwards: its FLASER lines in reverse order, each timestamp t mirrored to
 # first + last - t (so they increase again).
@@ -51,7 +72,8 @@ reversed() {  # carmen-log out.log
 started() {  # carmen-log from out.log
   zcat -f "$1" | awk -v from="$2" '$1 == "FLASER" && n++ >= from' > "$3"
 }
-printf "%-28s %-10s %-7s %-24s %-9s %-9s %-9s\n" log ATE nodes "constraints (loops)" fallback ambiguous decided
+printf "%-28s %-8s %-7s %-24s %-9s %-9s %-9s %-8s %-7s %-3s %s\n" log "ATE (m)" nodes "constraints (loops)" fallback \
+  ambiguous decided support target ok "own-basin (m)"
 logs=("$carmen_dir"/*-corrected.log.gz)
 for log in "${logs[@]}"; do
   [[ -f $log ]] || continue
