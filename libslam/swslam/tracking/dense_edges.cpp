@@ -36,7 +36,7 @@ graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to, const Trac
 
 std::optional<graph::Constraint> matchEdge(const Keyframe& from, const Keyframe& node, const PreparedScan& scan,
                                            graph::EdgeKind kind, const TrackingParams& p,
-                                           const plicp::PlicpParams& plicp, const Eigen::Matrix3d& inherited)
+                                           const plicp::PlicpParams& plicp)
 {
   // Guess from the current estimates; PLICP works in the sensor frame.
   const CPose2D guess = geometry::sensorMotion(from.sensor_pose, node.pose - from.pose);
@@ -51,28 +51,9 @@ std::optional<graph::Constraint> matchEdge(const Keyframe& from, const Keyframe&
   e.to = node.id;
   e.z = geometry::vehicleMotion(from.sensor_pose, m.pose);
   e.information = geometry::informationFromCovariance(
-      geometry::vehicleMotionCovariance(from.sensor_pose, m.pose, m.covariance) + inherited);
+      geometry::vehicleMotionCovariance(from.sensor_pose, m.pose, m.covariance));
   e.kind = kind;
   return e;
-}
-
-Eigen::Matrix3d inheritedAmbiguity(const std::vector<Keyframe>& keyframes, size_t from, size_t to)
-{
-  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
-  const CPose2D& a = keyframes.at(from).pose;
-  const CPose2D& b = keyframes.at(to).pose;
-  const CPose2D z = b - a;
-  for (size_t k = from + 1; k <= to; ++k)
-  {
-    const Keyframe& kf = keyframes[k];
-    if (!kf.alternative) continue;
-    // The rigid motion that takes keyframe k to its alternative, applied to `to`.
-    const CPose2D moved = (keyframes[k - 1].pose + *kf.alternative) + (-kf.pose);
-    const CPose2D other = (moved + b) - a;
-    const Eigen::Vector3d d(other.x() - z.x(), other.y() - z.y(), std::remainder(other.phi() - z.phi(), 2 * M_PI));
-    sum += d * d.transpose();
-  }
-  return sum;
 }
 
 DenseEdges denseEdges(const std::vector<Keyframe>& keyframes, const PreparedScan& scan, const TrackingParams& p,
@@ -93,8 +74,7 @@ DenseEdges denseEdges(const std::vector<Keyframe>& keyframes, const PreparedScan
   for (const auto& [d, id] : near)
   {
     out.tried++;
-    if (auto e = matchEdge(keyframes[id], node, scan, graph::EdgeKind::DenseNeighbour, p, plicp,
-                           inheritedAmbiguity(keyframes, id, node.id)))
+    if (auto e = matchEdge(keyframes[id], node, scan, graph::EdgeKind::DenseNeighbour, p, plicp))
       out.edges.push_back(*e);
   }
   return out;

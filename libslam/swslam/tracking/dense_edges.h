@@ -29,17 +29,7 @@ graph::Constraint priorEdge(const Keyframe& from, const Keyframe& to, const Trac
  * lost_prior_sigma_xy): never a confident pull along a corridor. */
 std::optional<graph::Constraint> matchEdge(const Keyframe& from, const Keyframe& node, const PreparedScan& scan,
                                            graph::EdgeKind kind, const TrackingParams& p,
-                                           const plicp::PlicpParams& plicp,
-                                           const Eigen::Matrix3d& inherited = Eigen::Matrix3d::Zero());
-
-/** The ambiguity an edge `from -> to` inherits from the keyframes between (from < k <= to)
- * whose match had a second peak (Keyframe::alternative): its guess took each one's first
- * peak, and a match from that guess stays in the basin the guess chose (a corridor's doors
- * repeat). Had keyframe k taken its alternative, k and every later keyframe would have moved
- * rigidly, and the edge's relative pose by d_k; the sum of d_k d_k' is added to the edge's
- * covariance, as the second peak's offset is to the consecutive edge's own. Poses from
- * `keyframes` (indexed by id). Zero when none has an alternative. */
-Eigen::Matrix3d inheritedAmbiguity(const std::vector<Keyframe>& keyframes, size_t from, size_t to);
+                                           const plicp::PlicpParams& plicp);
 
 struct DenseEdges
 {
@@ -47,7 +37,7 @@ struct DenseEdges
   size_t tried = 0;  ///< matches tried
 };
 /** The dense edges of the newest keyframe, `keyframes.back()` (its scan `scan`): matchEdge()
- * (with inheritedAmbiguity) with the nearest max_dense_edges of the nodes before the previous one, among the last
+ * with the nearest max_dense_edges of the nodes before the previous one, among the last
  * dense_max_index_gap, within dense_radius. Older nodes within reach are loop candidates,
  * verified by the graph. */
 DenseEdges denseEdges(const std::vector<Keyframe>& keyframes, const PreparedScan& scan, const TrackingParams& p,

@@ -11,7 +11,6 @@
 
 #include <cstddef>
 #include <memory>
-#include <optional>
 
 namespace swslam::tracking
 {
@@ -23,10 +22,6 @@ struct Keyframe
   std::shared_ptr<const FacingNormals> facing;  ///< of scan's points (tracking/ambiguity.h); the same
   mrpt::poses::CPose2D sensor_pose;  ///< sensor mounting on the vehicle
   mrpt::Clock::time_point timestamp;
-  /** Its vehicle pose relative to the previous keyframe at the tracking search's second peak,
-   * when its match had one (an ambiguous match, doc/tracking.md): the dense edges across it
-   * were matched from guesses that took the first peak (inheritedAmbiguity). */
-  std::optional<mrpt::poses::CPose2D> alternative;
 };
 
 }  // namespace swslam::tracking

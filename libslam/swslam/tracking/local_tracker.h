@@ -118,9 +118,7 @@ class LocalTracker
    * more scans in a row went unmatched than one odd scan explains. */
   bool makesNode(const mrpt::poses::CPose2D& rel, bool matched);
   /** Makes the scan a node at step.pose, with its consecutive and dense edges. */
-  /** Makes the scan a keyframe with its edges; `second_peak`: its match's (ScanMatch), whose
-   * pose becomes the keyframe's alternative. */
-  void addNode(const PreparedScan& scan, TrackingStep& step, const std::optional<Eigen::Vector3d>& second_peak);
+  void addNode(const PreparedScan& scan, TrackingStep& step);
   Keyframe& addKeyframe(const PreparedScan& scan, const mrpt::poses::CPose2D& pose);
   /** The rays of the last submap_keyframes keyframes in the last keyframe's sensor frame. */
   std::vector<correlative::Ray> submapRays() const;
