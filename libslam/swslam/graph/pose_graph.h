@@ -84,9 +84,6 @@ class PoseGraph
   const Edge& edge(size_t index) const { return edges_.at(index); }
   /** Indices of the edges touching node `id` (both directions; none for a merged node). */
   const std::vector<size_t>& edgesOf(TNodeID id) const;
-  /** Removes edge `index` (a decision taken back); the last edge takes its index. Throws
-   * std::out_of_range for an index past the last. */
-  void removeEdge(size_t index);
 
   TNodeID root() const { return net_.root; }
   void setRoot(TNodeID id);
@@ -102,6 +99,8 @@ class PoseGraph
  private:
   /** After copying `other`, points edges_ at this graph's own measurements. */
   void relinkEdges(const PoseGraph& other);
+  /** Removes edge `index`; the last edge takes its index. */
+  void removeEdge(size_t index);
 
   Network net_;
   std::vector<Edge> edges_;

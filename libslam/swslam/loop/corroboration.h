@@ -31,8 +31,6 @@ class LoopCorroboration
                                const std::function<double(size_t)>& path_length);
 
   size_t waiting() const { return pending_.size(); }
-  /** Forgets the waiting loops (the graph took back a decision they were verified under). */
-  void clear() { pending_.clear(); }
 
  private:
   struct Pending

@@ -5,8 +5,6 @@
 
 #include <mrpt/system/CTimeLogger.h>
 
-#include <Eigen/LU>
-
 #include <algorithm>
 #include <set>
 #include <stdexcept>
@@ -107,16 +105,9 @@ GraphStep GraphModule::addNode(const NewNode& node)
   }
   nodes_.push_back(ln);
 
-  if (node.rival && loop_params_.enabled)
-  {
-    if (rivals_.size() == kMaxRivals) rivals_.erase(rivals_.begin());
-    rivals_[id] = Rival{*node.rival};
-  }
-
   std::vector<graph::Constraint> loops;
   const size_t correcting = closeLoops(id, step, loops);
-  if (weighRivals(loops, step)) schedule_.ranFull(id);
-  optimize(step.rival_taken || schedule_.fullNow(id, correcting), step);
+  optimize(schedule_.fullNow(id, correcting), step);
   step.insert = MapInsert{node.scan, id, node.observation,
                           step.poses.count(id) ? step.poses.at(id) : graph_.pose(id)};
   if (!loops.empty() && graph_params_.max_nodes_per_area > 0) loops_of_window_.emplace(id, std::move(loops));
@@ -193,9 +184,7 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Co
   for (const loop::LoopCheck& check : checks)
   {
     step.loops_checked++;
-    if (!check.edge) continue;
-    verified.push_back(*check.edge);
-    if (check.searched) searched_loops_.emplace(check.from, check.to);
+    if (check.edge) verified.push_back(*check.edge);
   }
   const auto corroborated = corroboration_.add(
       id, verified, [this](size_t n) { return graph_.pose(n); }, path_length);
@@ -218,73 +207,6 @@ size_t GraphModule::closeLoops(size_t id, GraphStep& step, std::vector<graph::Co
     }
   }
   return correcting;
-}
-
-namespace
-{
-/** The rigid motion that takes `node` (and every later node) to where `rival` puts it. */
-CPose2D rivalMotion(const graph::PoseGraph& graph, const graph::Constraint& rival)
-{
-  return (graph.pose(rival.from) + rival.z) + (-graph.pose(rival.to));
-}
-
-/** Whether an edge between `from` and `to` joins a node before `node` to `node` or a later one. */
-bool spans(size_t from, size_t to, size_t node) { return std::min(from, to) < node && std::max(from, to) >= node; }
-}  // namespace
-
-bool GraphModule::weighRivals(const std::vector<graph::Constraint>& accepted, GraphStep& step)
-{
-  for (const graph::Constraint& e : accepted)
-  {
-    if (searched_loops_.count({e.from, e.to}) == 0 || e.from >= e.to) continue;
-    const CPose2D now = graph_.pose(e.to) - graph_.pose(e.from);
-    const Eigen::Vector2d measured(e.z.x() - now.x(), e.z.y() - now.y());
-    const Eigen::Matrix3d cov = e.information.inverse();
-    const double sd = std::sqrt(std::max(cov(0, 0), cov(1, 1))) + loop_params_.min_drift_sigma_xy;
-    // The rivals the loop spans whose choice would explain it: the loop lies nearer to where
-    // the rival puts its new node than half the way back; one that lies that near where the
-    // graph has it votes for each decision it could tell apart.
-    std::vector<Rival*> explained;
-    for (auto it = rivals_.upper_bound(e.from); it != rivals_.end() && it->first <= e.to; ++it)
-    {
-      const CPose2D other = (rivalMotion(graph_, it->second.edge) + graph_.pose(e.to)) - graph_.pose(e.from);
-      const Eigen::Vector2d shift(other.x() - now.x(), other.y() - now.y());
-      if (shift.norm() < 3 * sd) continue;  // the loop cannot tell the two apart
-      if ((measured - shift).norm() < 0.5 * shift.norm()) explained.push_back(&it->second);
-      else if (measured.norm() < 0.5 * shift.norm()) it->second.for_decision++;
-    }
-    // A loop that several decisions would explain alike does not say which one was wrong.
-    if (explained.size() != 1) continue;
-    Rival& r = *explained.front();
-    if (++r.for_rival >= 2 && r.for_decision == 0)
-    {
-      takeRival(r.edge.to, step);
-      return true;
-    }
-  }
-  return false;
-}
-
-void GraphModule::takeRival(size_t node, GraphStep& step)
-{
-  const graph::Constraint rival = rivals_.at(node).edge;
-  rivals_.erase(node);
-  std::lock_guard<std::mutex> lock(mutex_);
-  const CPose2D motion = rivalMotion(graph_, rival);
-  for (size_t k = graph_.edgeCount(); k-- > 0;)
-  {
-    const graph::PoseGraph::Edge& e = graph_.edge(k);
-    const bool independent = e.kind == graph::EdgeKind::Loop && searched_loops_.count({e.from, e.to}) != 0;
-    if (!independent && spans(e.from, e.to, node)) graph_.removeEdge(k);
-  }
-  for (const auto n : graph_.nodeIds())
-    if (n >= node && !graph_.isMerged(n)) graph_.setPose(n, motion + graph_.pose(n));
-  for (const auto n : graph_.nodeIds())
-    if (graph_.isAnchor(n)) graph_.placeMergedInto(n);
-  addEdge(rival, step);
-  // Loops verified under the decision taken back that wait for a partner would pull the old way.
-  corroboration_.clear();
-  step.rival_taken = true;
 }
 
 namespace

@@ -39,7 +39,6 @@ struct GraphStep
   size_t scan = 0;
   size_t node = 0;
   size_t loops_checked = 0, loops_accepted = 0;
-  bool rival_taken = false;  ///< tracking's decision at a node was taken back (GraphModule::takeRival)
   size_t pairs_refined = 0, refinement_edges = 0;  ///< final refinement: pairs matched, edges added
   size_t edges_rejected = 0;  ///< tracker edges the graph refused (e.g. non-finite)
   bool full = false;          ///< the whole graph was optimized
@@ -98,16 +97,6 @@ class GraphModule
    * its loops says so: held there, its scan released and removed from the map (step.reinsert). */
   void mergeIfRedundant(size_t id, GraphStep& step);
   void optimize(bool full, GraphStep& step);
-  /** Each searched loop among `accepted` spanning a node with a rival (tracking's second peak)
-   * votes for the rival or for the decision taken: for the rival if its match lies nearer to
-   * where the rival would put the loop's new node than to where the graph has it (loops
-   * matched from the graph's guess inherit the decision and do not vote). A rival with two
-   * votes and more than the decision's is taken (takeRival); returns whether one was. */
-  bool weighRivals(const std::vector<graph::Constraint>& accepted, GraphStep& step);
-  /** Takes back tracking's decision at node `node` for its rival: the edges across it that
-   * inherit the decision (all but the searched loops) go, `node` and every later node move
-   * rigidly to where the rival puts them, and the rival joins the graph. */
-  void takeRival(size_t node, GraphStep& step);
   /** Node `n` for loop closure, with its scan (rebuilt by the store if not kept). */
   loop::LoopNode loopNode(size_t n) const;
 
@@ -130,18 +119,6 @@ class GraphModule
   /** The loops accepted at each node still in the sliding window (max_nodes_per_area > 0): its
    * merge is decided as it leaves the window. Only the owning thread. */
   std::map<size_t, std::vector<graph::Constraint>> loops_of_window_;
-  /** Tracking's decisions that the graph may take back, by node: the rival consecutive edge and
-   * the searched loops' votes; at most kMaxRivals, the oldest dropped. Only the owning thread. */
-  struct Rival
-  {
-    graph::Constraint edge;
-    int for_rival = 0, for_decision = 0;
-  };
-  std::map<size_t, Rival> rivals_;
-  static constexpr size_t kMaxRivals = 256;
-  /** Verified loops whose match came from a correlative search, not from the graph's guess
-   * (LoopCheck::searched), by their nodes. Only the owning thread. */
-  std::set<std::pair<size_t, size_t>> searched_loops_;
 };
 
 }  // namespace swslam::system

@@ -24,7 +24,6 @@ struct NewNode
   tracking::Keyframe keyframe;  ///< pose as tracked (the graph re-bases it on its own estimate)
   mrpt::obs::CObservation2DRangeScan::Ptr observation;
   std::vector<graph::Constraint> edges;  ///< edges[0] connects the previous node
-  std::optional<graph::Constraint> rival;  ///< edges[0] at the tracking search's second peak
 };
 
 /** Graph -> map: insert a new node's scan. */

@@ -137,7 +137,6 @@ void SlamSystem::trackOne(const sensor::ScanInput& input, size_t index)
   node.keyframe = tracker_.keyframes().back();
   node.observation = input.observation;
   node.edges = step.edges;
-  node.rival = step.rival;
   if (mode_ == RunMode::Deterministic)
     guarded("graph optimization", [&] { graphOne(node); });
   else

@@ -78,7 +78,7 @@ TrackingStep LocalTracker::process(const mrpt::obs::CObservation2DRangeScan& obs
   // A new keyframe lies exactly on itself (its consecutive edge carries the match); a scan
   // between keyframes keeps its match's information for its place in the trajectory.
   if (makesNode(rel, step.match.ok()))
-    addNode(scan, step, m.second_peak);
+    addNode(scan, step);
   else if (step.match.ok())
     step.relative_information = geometry::informationFromCovariance(
         geometry::vehicleMotionCovariance(last.sensor_pose, step.match.pose, step.match.covariance));
@@ -111,23 +111,13 @@ void LocalTracker::resume(const std::vector<CPose2D>& poses,
   last_time_ = keyframes_.back().timestamp;
 }
 
-void LocalTracker::addNode(const PreparedScan& scan, TrackingStep& step,
-                           const std::optional<Eigen::Vector3d>& second_peak)
+void LocalTracker::addNode(const PreparedScan& scan, TrackingStep& step)
 {
   // The consecutive edge from the match (or, without one, a weak prior that says so), then
   // dense edges to the recent nodes within the radius, nearest first.
   const size_t previous = keyframes_.back().id;
   const Keyframe& node = addKeyframe(scan, step.pose);
   step.edges.push_back(consecutiveEdge(keyframes_[previous], node, step.match, tracking_));
-  if (second_peak && step.match.ok())
-  {
-    // The same edge at the second peak, as certain (its covariance spans both peaks).
-    const CPose2D& m = step.match.pose;
-    const Eigen::Vector3d& d = *second_peak;
-    step.rival = step.edges.front();
-    step.rival->z = geometry::vehicleMotion(keyframes_[previous].sensor_pose,
-                                            CPose2D(m.x() + d.x(), m.y() + d.y(), m.phi() + d.z()));
-  }
   DenseEdges dense = denseEdges(keyframes_, scan, tracking_, plicp_);
   step.edges.insert(step.edges.end(), dense.edges.begin(), dense.edges.end());
   step.dense_matches = dense.tried;

@@ -51,9 +51,6 @@ struct TrackingStep
   TrackingSource source = TrackingSource::First;
   bool new_keyframe = false;
   std::vector<graph::Constraint> edges;  ///< the new node's edges
-  /** The new node's consecutive edge at the search's second peak (ScanMatch::second_peak): the
-   * decision the graph may take back (GraphModule, doc/graph-optimization.md "Rivals"). */
-  std::optional<graph::Constraint> rival;
   size_t dense_matches = 0;        ///< dense-neighbour matches tried for the new node
   bool searched = false;           ///< the correlative search ran (source says if it won)
   double match_time = 0;           ///< [s] spent matching against the keyframe (search included)
@@ -120,9 +117,8 @@ class LocalTracker
   /** Whether the scan at `rel` makes a node: past the keyframe threshold, and matched unless
    * more scans in a row went unmatched than one odd scan explains. */
   bool makesNode(const mrpt::poses::CPose2D& rel, bool matched);
-  /** Makes the scan a node at step.pose, with its consecutive and dense edges; with its
-   * match's `second_peak` (ScanMatch), the consecutive edge's rival too (step.rival). */
-  void addNode(const PreparedScan& scan, TrackingStep& step, const std::optional<Eigen::Vector3d>& second_peak);
+  /** Makes the scan a node at step.pose, with its consecutive and dense edges. */
+  void addNode(const PreparedScan& scan, TrackingStep& step);
   Keyframe& addKeyframe(const PreparedScan& scan, const mrpt::poses::CPose2D& pose);
   /** The rays of the last submap_keyframes keyframes in the last keyframe's sensor frame. */
   std::vector<correlative::Ray> submapRays() const;
