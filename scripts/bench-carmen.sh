@@ -40,23 +40,27 @@ run() {  # name carmen-log
   ate=$(field 'ATE (rmse)' "$s" | awk '{print $1}')
   support=$(optimum "$out/$name.gt.tum" "$out/$name.rawlog")
   own=$(optimum "$out/$name/trajectory.tum" "$out/$name.rawlog" "$out/$name/own-optimum.tum")
-  own_ate=$("$bin/swslam-eval" ate "$out/$name/own-optimum.tum" "$out/$name.gt.tum" 2> /dev/null |
-    sed -n 's/^# ATE \([0-9.]*\) m.*/\1/p')
+  own_ate=$("$bin/swslam-eval" ate "$out/$name/own-optimum.tum" "$out/$name.gt.tum" 2> /dev/null | value ate_rmse)
   read -r target ok < <(awk -v a="$ate" -v s="$support" \
     'BEGIN { if (s == "") { print "? ?"; exit }  # no optimum: no target
             t = s + 0.2; if (t < 0.3) t = 0.3; printf "%.3f %s\n", t, (a + 0 <= t ? "yes" : "no") }')
   printf "%-28s %-8s %-7s %-24s %-9s %-9s %-9s %-8s %-7s %-3s %s\n" "$name" "$ate" \
     "$(field 'Number of graph nodes' "$s")" "$(field 'Number of graph constraints' "$s")" \
     "$(field 'Scans tracked by fallback' "$s")" "$(field 'Ambiguous scans' "$s")" \
-    "$(field 'of them decided by the prediction' "$s")" "${support:-?}" "$target" "$ok" "${own:-?} / ${own_ate:-?}"
+    "$(field 'of them decided by the prediction' "$s")" "$(metres "$support")" "$target" "$ok" \
+    "$(metres "$own") / $(metres "$own_ate")"
 }
 # The scans' own optimum started at a trajectory: its distance from it (m); written to OUT.tum
 # when given.
 optimum() {  # trajectory.tum log.rawlog [OUT.tum]
   local args=(laser-optimum "$1" "$2" -c "$cfg")
   [[ $# -lt 3 ]] || args+=(-o "$3")
-  "$bin/swslam-eval" "${args[@]}" 2> /dev/null | sed -n 's/.*optimum lies \([0-9.]*\) m.*/\1/p'
+  "$bin/swslam-eval" "${args[@]}" 2> /dev/null | value moved_rmse_m
 }
+# The value of swslam-eval's `KEY=value` line.
+value() { sed -n "s/^$1=//p"; }
+# A distance to four decimals, `?` when there is none.
+metres() { if [[ -n $1 ]]; then printf '%.4f' "$1"; else printf '?'; fi; }
 # A log played backwards: its FLASER lines in reverse order, each timestamp t mirrored to
 # first + last - t (so they increase again).
 reversed() {  # carmen-log out.log
