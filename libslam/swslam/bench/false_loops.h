@@ -15,11 +15,13 @@
 
 namespace swslam::bench
 {
-/** One method: a name and how it optimizes (it returns the edges it switched off). */
+/** One method: a name, how it optimizes (it returns the edges it switched off) and, if it
+ * minimizes a cost of its own (TLS), that cost (empty: the target kernel's, targetCost). */
 struct RobustMethod
 {
   std::string name;
   std::function<SolverRun(const graph::PoseGraph& graph, std::vector<size_t>& switched_off)> run;
+  std::function<double(const graph::PoseGraph& graph)> objective;
 };
 
 /** The robustified edges of `graph` whose weight under params' kernel is below
@@ -46,8 +48,9 @@ struct FalseLoopCase
   double rmse_to_clean = 0;   ///< [m] node positions against the outlier-free optimum
   /** chi2 of the true edges at the result, relative to the optimum's, minus 1 (0: as good). */
   double clean_chi2_excess = 0;
-  /** The target kernel's (params') cost of the graph with its false loops at the result, over
-   * the same at the outlier-free optimum: below 1, the kernel itself prefers the result. */
+  /** The method's objective (its own, else the target kernel's) for the graph with its false
+   * loops at the result, over the same at the outlier-free optimum: below 1, the objective
+   * itself prefers the result, and no search for its minimum can end at the clean graph. */
   double target_cost_ratio = 1;
   double precision = 1, recall = 1;  ///< of the switched-off edges against the false loops
   size_t switched_off = 0;
