@@ -2,7 +2,8 @@
 // with no outlier, the least-squares optimum and nothing switched off; with as many false loops
 // as true ones, random or grouped, the optimum of the graph without them, all of them switched
 // off and hardly a true edge; a wrong consecutive edge is switched off too; where loops are few
-// and far apart, a result no more costly than the clean optimum.
+// and far apart, a result no more costly than the clean optimum (and, with no false loop, the
+// optimum of every edge without a search).
 #include <swslam/graph/outlier_decision.h>
 
 #include <swslam/graph/initialization.h>
@@ -116,6 +117,15 @@ TEST(OutlierDecision, FewLoopsFarApartAreDecidedAlongTheChain)
   o.seed = 5;
   const SyntheticGraph s = makeGridWalkGraph(o);
   const PoseGraph l2 = leastSquares(s.graph);
+  {
+    // Without false loops, every edge within its gate and none worth switching off alone: the
+    // least-squares optimum, decided without the pass in the chain's order.
+    PoseGraph g = s.graph;
+    const OptimizationReport r = optimizeFull(g, tls());
+    EXPECT_TRUE(r.switched_off.empty());
+    EXPECT_LT(distance(g, l2), 1e-3);
+    EXPECT_NE(r.message.find("(1 proposals)"), std::string::npos) << r.message;
+  }
   for (const unsigned seed : {3u, 4u, 5u})
     for (const bool grouped : {false, true})
     {
