@@ -73,24 +73,6 @@ void applyStep(const std::vector<int>& var, const Eigen::VectorXd& dx, std::vect
   }
 }
 
-/** Per pose, the lowest pose index of its connected component (edges joining poses). */
-std::vector<int> componentRoots(const GraphProblem& p)
-{
-  std::vector<int> parent(p.poses.size());
-  for (size_t n = 0; n < parent.size(); ++n) parent[n] = static_cast<int>(n);
-  auto root = [&](int n) {
-    while (parent[n] != n) n = parent[n] = parent[parent[n]];
-    return n;
-  };
-  for (const auto& e : p.edges)
-  {
-    const int a = root(e.i), b = root(e.j);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the lower index stays the root
-  }
-  std::vector<int> roots(parent.size());
-  for (size_t n = 0; n < roots.size(); ++n) roots[n] = root(static_cast<int>(n));
-  return roots;
-}
 
 struct Outcome
 {
@@ -219,6 +201,24 @@ std::vector<char> weakEdges(const GraphProblem& p, const std::vector<geometry::P
     weak[n] = edgeCost(std::sqrt(err.dot(e.information * err)), e, k).weight < weight;
   }
   return weak;
+}
+
+std::vector<int> componentRoots(const GraphProblem& p)
+{
+  std::vector<int> parent(p.poses.size());
+  for (size_t n = 0; n < parent.size(); ++n) parent[n] = static_cast<int>(n);
+  auto root = [&](int n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  for (const auto& e : p.edges)
+  {
+    const int a = root(e.i), b = root(e.j);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the lower index stays the root
+  }
+  std::vector<int> roots(parent.size());
+  for (size_t n = 0; n < roots.size(); ++n) roots[n] = root(static_cast<int>(n));
+  return roots;
 }
 
 std::vector<int> variableIndex(const GraphProblem& p, size_t& components)

@@ -32,6 +32,9 @@ Evaluation evaluate(const GraphProblem& p, const std::vector<geometry::Pose2>& x
 std::vector<char> weakEdges(const GraphProblem& p, const std::vector<geometry::Pose2>& x, const KindKernels& k,
                             const std::vector<geometry::SinCos>& rz, double weight);
 
+/** Per pose, the lowest pose index of its connected component (edges joining poses). */
+std::vector<int> componentRoots(const GraphProblem& p);
+
 /** Variable index per pose (-1: held fixed). A connected component with no fixed pose is
  * held at its first pose (its gauge): otherwise nothing would tie it down. `components`
  * receives their number. */

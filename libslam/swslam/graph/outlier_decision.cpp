@@ -1,6 +1,7 @@
 #include <swslam/graph/outlier_decision.h>
 
 #include <swslam/graph/initialization.h>
+#include <swslam/graph/levenberg_marquardt.h>
 #include <swslam/graph/loop_support.h>
 #include <swslam/graph/single_flip.h>
 #include <swslam/graph/truncated.h>
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace swslam::graph
@@ -593,23 +593,13 @@ void tryWithoutStrainedRuns(const GraphProblem& problem, const std::vector<int>&
 
 /** Whether the chi2 of every edge at the problem's poses is within the 0.999 quantile of the
  * chi-square distribution of a least-squares optimum whose edges all hold (3 degrees of freedom
- * per edge, less 3 per pose not held). */
+ * per edge, less 3 per free pose). */
 bool chi2Plausible(const GraphProblem& problem)
 {
-  const int n = static_cast<int>(problem.poses.size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int p) {
-    while (parent[p] != p) p = parent[p] = parent[parent[p]];
-    return p;
-  };
-  int components = n;
-  for (const auto& e : problem.edges)
-  {
-    const int a = root(e.i), b = root(e.j);
-    if (a != b) parent[a] = b, --components;
-  }
-  const int dof = 3 * static_cast<int>(problem.edges.size()) - 3 * (n - components);
+  size_t components = 0;
+  const std::vector<int> var = variableIndex(problem, components);
+  const int free = static_cast<int>(std::count_if(var.begin(), var.end(), [](int v) { return v >= 0; }));
+  const int dof = 3 * static_cast<int>(problem.edges.size()) - 3 * free;
   return dof > 0 && graphChi2(problem) <= mrpt::math::chi2inv(0.999, dof);
 }
 

@@ -43,6 +43,20 @@ double distance(const PoseGraph& g, const PoseGraph& reference)
 {
   return compareToTruth(g, truthFromGraph(reference)).rmse_xy;
 }
+
+/** A walk of 800 poses on a grid of (2 extent + 1)^2 cells, consecutive edges only and `loops`
+ * loops, its headings drifting by 0.02 rad a step. */
+SyntheticGraph sparseWalk(size_t loops, int extent, unsigned seed)
+{
+  SyntheticGraphOptions o;
+  o.nodes = 800;
+  o.dense_neighbours = 0;
+  o.total_edges = 799 + loops;
+  o.grid_half_extent = extent;
+  o.sigma_theta = 0.02;
+  o.seed = seed;
+  return makeGridWalkGraph(o);
+}
 }  // namespace
 
 TEST(OutlierDecision, WithoutOutliersItIsLeastSquares)
@@ -110,14 +124,7 @@ TEST(OutlierDecision, FewLoopsFarApartAreDecidedAlongTheChain)
   // The chain is weak: a false loop may cost less kept than switched off, and then the
   // truncated cost's optimum is not the clean graph's. What is asked: a result no more costly
   // than the clean optimum with the false loops off, and that optimum where it is the result.
-  SyntheticGraphOptions o;
-  o.nodes = 800;
-  o.dense_neighbours = 0;
-  o.total_edges = 799 + 16;
-  o.grid_half_extent = 8;
-  o.sigma_theta = 0.02;
-  o.seed = 5;
-  const SyntheticGraph s = makeGridWalkGraph(o);
+  const SyntheticGraph s = sparseWalk(16, 8, 5);
   const PoseGraph l2 = leastSquares(s.graph);
   {
     // Without false loops, every edge within its gate and none worth switching off alone: the
@@ -152,14 +159,7 @@ TEST(OutlierDecision, ASparseWalkWithAsManyFalseLoopsEndsAtTheCleanOptimum)
   for (const auto& [graph_seed, seed, grouped] : {std::tuple{4u, 1u, false}, std::tuple{3u, 7u, true}})
   {
     SCOPED_TRACE("graph " + std::to_string(graph_seed) + ", false loops " + std::to_string(seed));
-    SyntheticGraphOptions o;
-    o.nodes = 800;
-    o.dense_neighbours = 0;
-    o.total_edges = 799 + 60;
-    o.grid_half_extent = 5;
-    o.sigma_theta = 0.02;
-    o.seed = graph_seed;
-    const SyntheticGraph s = makeGridWalkGraph(o);
+    const SyntheticGraph s = sparseWalk(60, 5, graph_seed);
     const PoseGraph l2 = leastSquares(s.graph);
     PoseGraph g = s.graph;
     const std::vector<size_t> added = swslam::test::addAsManyFalseLoops(g, seed, grouped);
