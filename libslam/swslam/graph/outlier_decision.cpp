@@ -227,9 +227,11 @@ bool decideInOrder(const GraphProblem& problem, const OutlierGates& gates, const
  * unwrapping resolves), the chain is what tells a loop that agrees with those kept from one that
  * does not. A decision of that pass is final, so a false loop taken early turns away the true
  * loops that contradict it (MIT with 20 random false loops, seed 17: one taken at node 737, the
- * four true loops after it switched off): the pass is also run again from the kMaxRetakes taken
- * loops with a loop turned away after them that bent the others most, each switched off with
- * the loops that agree with it (`runs`: LoopAgreement's). */
+ * four true loops after it switched off). So the pass is run again, up to kMaxRetakes times,
+ * from before a loop it took: of the kConflictTests takes that bent the others most, the first
+ * after which a loop a neighbour supports was turned away that, asked from the state before the
+ * take with it switched off, would have been kept. The pass again has that loop and the loops
+ * that agree with it (`agreement.runs`) switched off. */
 std::vector<Proposal> orderedInliers(const GraphProblem& problem, const OdometryChain& chain,
                                      const LoopAgreement& agreement, const OutlierGates& gates,
                                      const GraphOptimizerParams& params)
@@ -442,7 +444,8 @@ std::vector<char> nearBrokenChain(const GraphProblem& problem, const std::vector
 }
 
 /** The runs of loops (LoopAgreement::runs) not `tried` yet worth trying without their kept
- * loops (`only_at_break`: of those, the ones at a break of the chain), at most kMaxRunTrials: first those with a kept loop near a switched-off chain edge (a group of false
+ * loops (`only_at_break`: of those, the ones at a break of the chain), at most kMaxRunTrials:
+ * first those with a kept loop near a switched-off chain edge (a group of false
  * loops the graph broke its chain to take in: they fit, the chain does not), then the most
  * strained (the largest mean squared residual of their kept loops: a group the graph bent itself
  * to take in). Without a run its loops cost their gates, and the other edges at least nothing: a
