@@ -3,6 +3,7 @@
 #include <swslam/graph/initialization.h>
 #include <swslam/graph/levenberg_marquardt.h>
 #include <swslam/graph/loop_support.h>
+#include <swslam/graph/normal_equations.h>
 #include <swslam/graph/single_flip.h>
 #include <swslam/graph/truncated.h>
 
@@ -26,6 +27,13 @@ constexpr int kMaxRounds = 5;
  * them: each loop between far nodes fills the factor of its linear solves in (city10000 with
  * 10,688 random false loops: seconds per solve, against milliseconds without them). */
 constexpr size_t kMaxUnsupportedForLago = 1000;
+/** LAGO's proposals are made only where the factor of its linear systems over the edges used
+ * holds at most this many non-zeros per column (lagoAffordable): each solve costs about the
+ * poses times its square, and robust LAGO solves dozens of times. The public graphs' sets, false
+ * loops included, stay at 7-125; city10000 with 10,688 grouped false loops, whose groups support
+ * each other, reached 1283 over its consistent loops and 1983 over every edge (over 15 minutes
+ * for one case, then not finished). */
+constexpr double kMaxLagoFill = 400.0;
 /** The loops are also taken one at a time in the chain's order (orderedInliers) only where they
  * number at most this: each that does not fit the poses so far costs a LAGO and up to two
  * least-squares solves (MIT with 20 false loops: 38 of its 40, 0.5 s; CSAIL's 141 with 13 false:
@@ -127,6 +135,16 @@ bool headingsFitEveryEdge(const GraphProblem& problem, const std::vector<double>
     if (r * r / e.information.inverse()(2, 2) > gates.of(e) * gates.of(e)) return false;
   }
   return true;
+}
+
+/** Whether LAGO over the edges flagged in `use` (and every edge not robustified) is affordable:
+ * its factor's fill per column at most kMaxLagoFill (normal_equations.h's symbolic analysis). */
+bool lagoAffordable(const GraphProblem& problem, const std::vector<char>& use)
+{
+  std::vector<std::pair<int, int>> pairs;
+  for (size_t k = 0; k < problem.edges.size(); ++k)
+    if (use[k] || !problem.edges[k].robust) pairs.emplace_back(problem.edges[k].i, problem.edges[k].j);
+  return NormalEquations::fillPerColumnOf(static_cast<int>(problem.poses.size()), pairs) <= kMaxLagoFill;
 }
 
 std::vector<geometry::Pose2> lagoOrGuess(const GraphProblem& problem)
@@ -369,6 +387,7 @@ Candidate refined(const GraphProblem& problem, Proposal p, const OutlierGates& g
  * headings fit every edge within its gate (a graph with no outlier); nothing otherwise. */
 std::vector<Proposal> everyEdge(const GraphProblem& problem, const OutlierGates& gates)
 {
+  if (!lagoAffordable(problem, std::vector<char>(problem.edges.size(), 1))) return {};
   GraphProblem lago = problem;
   try
   {
@@ -385,7 +404,8 @@ std::vector<Proposal> everyEdge(const GraphProblem& problem, const OutlierGates&
            from_lago ? lago.poses : problem.poses}};
 }
 
-/** The other proposals: the guess's inliers, the locally consistent loops, robust LAGO's. */
+/** The other proposals: the guess's inliers, the locally consistent loops, robust LAGO's (these
+ * two where LAGO is affordable). */
 std::vector<Proposal> decidedProposals(const GraphProblem& problem, const std::vector<int>& support,
                                        const OutlierGates& gates, const GraphOptimizerParams& params)
 {
@@ -393,6 +413,7 @@ std::vector<Proposal> decidedProposals(const GraphProblem& problem, const std::v
   out.push_back({"the guess's inliers", guessInliers(problem, gates, params), problem.poses});
   std::vector<char> consistent(problem.edges.size());
   for (size_t k = 0; k < consistent.size(); ++k) consistent[k] = support[k] != 0;  // -1: no loop candidate
+  if (!lagoAffordable(problem, consistent)) return out;
   out.push_back({"the locally consistent loops", consistent, lagoOrGuess(subset(problem, consistent))});
   // Robust LAGO over the consistent loops, and over every loop where the loops no neighbour
   // supports are few (isolated true loops: a sparse graph, a tracking error only loops far
@@ -400,8 +421,9 @@ std::vector<Proposal> decidedProposals(const GraphProblem& problem, const std::v
   size_t unsupported = 0;
   for (const int s : support) unsupported += s == 0;
   std::vector<std::pair<std::string, std::vector<char>>> uses{{"robust LAGO's inliers", consistent}};
-  if (unsupported > 0 && unsupported <= kMaxUnsupportedForLago)
-    uses.push_back({"robust LAGO's inliers of every loop", std::vector<char>(problem.edges.size(), 1)});
+  const std::vector<char> every(problem.edges.size(), 1);
+  if (unsupported > 0 && unsupported <= kMaxUnsupportedForLago && lagoAffordable(problem, every))
+    uses.push_back({"robust LAGO's inliers of every loop", every});
   for (auto& [name, use] : uses)
     try
     {
